@@ -1,0 +1,381 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_MANIFOLD_HARMONICS_BASIS_H
+#define CGAL_MANIFOLD_HARMONICS_BASIS_H
+
+#include <CGAL/Spectral_surface_mesh_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_surface_mesh_deformation/Spectra_eigensolver_traits.h>
+#include <CGAL/Spectral_surface_mesh_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <Eigen/Dense>
+
+#include <cstdint>
+#include <istream>
+#include <ostream>
+#include <string>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// Makes the sign of every column deterministic: its entry of largest
+/// magnitude (first one on ties) is positive.
+inline void normalize_signs(Eigen::MatrixXd& eigenvectors)
+{
+  for(Eigen::Index k = 0; k < eigenvectors.cols(); ++k)
+  {
+    Eigen::Index largest = 0;
+    eigenvectors.col(k).cwiseAbs().maxCoeff(&largest);
+    if(eigenvectors(largest, k) < 0)
+      eigenvectors.col(k) = -eigenvectors.col(k);
+  }
+}
+
+/// The m smallest generalized eigenpairs of the cotangent stiffness against
+/// the lumped mass of `mesh` (validated arrays). Throws
+/// `Spectral_deformation_error`.
+template <class EigensolverTraits>
+void compute_manifold_harmonics(const Triangle_arrays& mesh, Eigen::Index m,
+                                EigensolverTraits& eigensolver, Eigen::VectorXd& eigenvalues,
+                                Eigen::MatrixXd& eigenvectors, Eigen::VectorXd& mass)
+{
+  typedef Spectral_deformation_error Error;
+  const Eigen::Index n = mesh.number_of_vertices();
+  if(m < 1 || m > n)
+    throw Error(Error::INVALID_ARGUMENT,
+                "the number of frequencies must be between 1 and the number of vertices (" +
+                    std::to_string(n) + "), got " + std::to_string(m));
+  const Eigen::SparseMatrix<double> stiffness = cotangent_stiffness(mesh);
+  mass = lumped_mass(mesh);
+  if(!eigensolver.compute(stiffness, mass, m, eigenvalues, eigenvectors))
+    throw Error(Error::SOLVER_FAILURE,
+                "the manifold harmonics eigensolver failed: " + eigensolver.error_message());
+  if(eigenvalues.size() != m || eigenvectors.rows() != n || eigenvectors.cols() != m ||
+     !eigenvalues.allFinite() || !eigenvectors.allFinite())
+    throw Error(Error::SOLVER_FAILURE,
+                "the manifold harmonics eigensolver returned an incomplete or non-finite result");
+  normalize_signs(eigenvectors);
+}
+
+} // namespace internal
+} // namespace Spectral_deformation
+
+/// \ingroup PkgSpectralSurfaceMeshDeformationRef
+/// The manifold harmonics basis (Vallet and Lévy 2008) of a triangle mesh: the
+/// `m` eigenfunctions of the cotangent Laplace-Beltrami operator of lowest
+/// frequency.
+///
+/// The basis is the solution of the generalized eigenproblem `Q h = lambda M h`
+/// with `Q` the cotangent stiffness matrix (`cotangent_stiffness_matrix()`) and
+/// `M` the lumped mass matrix (`lumped_mass_matrix()`): the `m` smallest
+/// eigenvalues in ascending order and the matching eigenvectors, stored as the
+/// columns of an `n × m` matrix `H` with `Hᵀ M H = I`. The sign of each column
+/// is fixed so that its entry of largest magnitude is positive.
+///
+/// The manifold harmonic transform of per-vertex data `x` (`n × d`) is
+/// `Hᵀ M x`, its inverse `H x̃`; `H Hᵀ M x` is the low-pass reconstruction,
+/// the M-orthogonal projection onto the basis.
+///
+/// Row `i` of every per-vertex matrix corresponds to the vertex of index `i` in
+/// the vertex index map given at construction.
+///
+/// Meshes with boundaries and with several connected components are
+/// supported (a component contributes its own constant function of
+/// eigenvalue 0).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, triangulated.
+/// \tparam EigensolverTraits a model of `ManifoldHarmonicsEigensolverTraits`;
+///         `CGAL::Default` means `Spectra_eigensolver_traits<>`.
+template <class TriangleMesh, class EigensolverTraits = CGAL::Default>
+class Manifold_harmonics_basis
+{
+public:
+  /// The eigensolver traits type.
+  typedef typename CGAL::Default::Get<EigensolverTraits, Spectra_eigensolver_traits<>>::type
+      Eigensolver_traits;
+  /// Dense matrix type of bases and per-vertex data.
+  typedef Eigen::MatrixXd Matrix;
+  /// Dense vector type of eigenvalues and masses.
+  typedef Eigen::VectorXd Vector;
+
+  /// Creates an empty basis, to be filled by `compute()` or `load()`.
+  Manifold_harmonics_basis() = default;
+
+  /// Computes the basis of `number_of_frequencies` functions of `tm`; see `compute()`.
+  template <class NamedParameters = parameters::Default_named_parameters>
+  Manifold_harmonics_basis(const TriangleMesh& tm, std::size_t number_of_frequencies,
+                           const NamedParameters& np = parameters::default_values(),
+                           Eigensolver_traits eigensolver = Eigensolver_traits())
+  {
+    compute(tm, number_of_frequencies, np, eigensolver);
+  }
+
+  /// Computes the basis of `number_of_frequencies` functions of `tm`,
+  /// replacing the current content.
+  ///
+  /// \tparam NamedParameters a sequence of CGAL named parameters
+  /// \param tm the mesh, triangulated, with no degenerate face and no isolated vertex
+  /// \param number_of_frequencies `m`, between 1 and the number of vertices
+  /// \param np optional named parameters among `vertex_point_map` (default
+  ///        `get(CGAL::vertex_point, tm)`) and `vertex_index_map` (default: an
+  ///        initialized vertex index map of `tm`)
+  /// \param eigensolver the eigensolver to use
+  ///
+  /// \throws Spectral_deformation_error with code `INVALID_MESH` (not a
+  ///         triangle mesh, empty, degenerate face, isolated vertex, non-finite
+  ///         coordinate), `INVALID_ARGUMENT` (`m` out of range) or
+  ///         `SOLVER_FAILURE` (the eigensolver failed or did not converge). The
+  ///         basis is unchanged when an exception is thrown.
+  template <class NamedParameters = parameters::Default_named_parameters>
+  void compute(const TriangleMesh& tm, std::size_t number_of_frequencies,
+               const NamedParameters& np = parameters::default_values(),
+               Eigensolver_traits eigensolver = Eigensolver_traits())
+  {
+    const Spectral_deformation::internal::Triangle_arrays arrays =
+        Spectral_deformation::internal::extract_triangle_arrays(tm, np);
+    Vector eigenvalues, mass;
+    Matrix eigenvectors;
+    Spectral_deformation::internal::compute_manifold_harmonics(
+        arrays, static_cast<Eigen::Index>(number_of_frequencies), eigensolver, eigenvalues,
+        eigenvectors, mass);
+    m_eigenvalues.swap(eigenvalues);
+    m_basis.swap(eigenvectors);
+    m_mass.swap(mass);
+    m_number_of_faces = static_cast<std::uint64_t>(arrays.number_of_faces());
+    m_fingerprint = Spectral_deformation::internal::fingerprint(arrays);
+  }
+
+  /// \name Accessors
+  /// @{
+
+  /// `true` when no basis has been computed or loaded.
+  bool empty() const { return m_basis.size() == 0; }
+  /// The number of vertices `n` of the mesh.
+  std::size_t number_of_vertices() const { return static_cast<std::size_t>(m_basis.rows()); }
+  /// The number of basis functions `m`.
+  std::size_t number_of_frequencies() const { return static_cast<std::size_t>(m_basis.cols()); }
+  /// The eigenvalues, ascending (`m`).
+  const Vector& eigenvalues() const { return m_eigenvalues; }
+  /// The basis `H` (`n × m`), M-orthonormal.
+  const Matrix& basis() const { return m_basis; }
+  /// The diagonal of the lumped mass matrix `M` (`n`).
+  const Vector& mass() const { return m_mass; }
+  /// A digest of the connectivity and coordinates of the mesh the basis was
+  /// computed on; `load()` compares it with the mesh it is given.
+  std::uint64_t mesh_fingerprint() const { return m_fingerprint; }
+
+  /// @}
+
+  /// \name Transforms
+  /// @{
+
+  /// The manifold harmonic transform `Hᵀ M x` of per-vertex data `x` (`n × d`),
+  /// an `m × d` matrix of coefficients.
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `x` does not have `n` rows.
+  Matrix transform(const Matrix& x) const
+  {
+    check_rows(x, m_basis.rows(), "transform");
+    return m_basis.transpose() * (m_mass.asDiagonal() * x);
+  }
+
+  /// The inverse transform `H_k x̃` of `k × d` coefficients, `k ≤ m` (the
+  /// first `k` frequencies are used), an `n × d` matrix.
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `k > m`.
+  Matrix inverse_transform(const Matrix& coefficients) const
+  {
+    if(coefficients.rows() > m_basis.cols() || empty())
+      throw Spectral_deformation_error(
+          Spectral_deformation_error::INVALID_ARGUMENT,
+          "inverse_transform: more coefficients than basis functions");
+    return m_basis.leftCols(coefficients.rows()) * coefficients;
+  }
+
+  /// The low-pass reconstruction of per-vertex data `x` (`n × d`) with the
+  /// first `k` frequencies (`1 ≤ k ≤ m`; `k = 0` means all `m`): the
+  /// M-orthogonal projection `H_k H_kᵀ M x`.
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) on a size mismatch.
+  Matrix low_pass(const Matrix& x, std::size_t k = 0) const
+  {
+    check_rows(x, m_basis.rows(), "low_pass");
+    const Eigen::Index used = (k == 0) ? m_basis.cols() : static_cast<Eigen::Index>(k);
+    if(used > m_basis.cols())
+      throw Spectral_deformation_error(Spectral_deformation_error::INVALID_ARGUMENT,
+                                       "low_pass: more frequencies requested than computed");
+    const auto Hk = m_basis.leftCols(used);
+    return Hk * (Hk.transpose() * (m_mass.asDiagonal() * x));
+  }
+
+  /// @}
+
+  /// \name Storage
+  /// @{
+
+  /// Writes the basis to a binary stream: a header (format tag and version,
+  /// number of vertices, faces and frequencies, the mesh fingerprint), the
+  /// eigenvalues, the mass, the basis, and a checksum of all of it.
+  /// \throws Spectral_deformation_error (`IO_ERROR`) when the basis is empty or
+  ///         the stream fails.
+  void save(std::ostream& os) const
+  {
+    typedef Spectral_deformation_error Error;
+    if(empty())
+      throw Error(Error::IO_ERROR, "save: the basis is empty");
+    Checksummed_writer out(os);
+    out.write_bytes(format_tag, sizeof(format_tag));
+    out.write_value(format_version);
+    out.write_value(static_cast<std::uint64_t>(m_basis.rows()));
+    out.write_value(m_number_of_faces);
+    out.write_value(static_cast<std::uint64_t>(m_basis.cols()));
+    out.write_value(m_fingerprint);
+    out.write_bytes(m_eigenvalues.data(), sizeof(double) * m_eigenvalues.size());
+    out.write_bytes(m_mass.data(), sizeof(double) * m_mass.size());
+    out.write_bytes(m_basis.data(), sizeof(double) * m_basis.size());
+    const std::uint64_t checksum = out.checksum();
+    os.write(reinterpret_cast<const char*>(&checksum), sizeof(checksum));
+    if(!os)
+      throw Error(Error::IO_ERROR, "save: writing the basis failed");
+  }
+
+  /// Reads a basis written by `save()` and checks that it belongs to `tm`
+  /// (same numbers of vertices and faces, same fingerprint of connectivity and
+  /// coordinates, read through the same kind of named parameters as in
+  /// `compute()`).
+  /// \throws Spectral_deformation_error with code `IO_ERROR` (unreadable,
+  ///         truncated or corrupted stream, not a basis file), `MESH_MISMATCH`
+  ///         (the basis belongs to another mesh) or `INVALID_MESH`. The basis is
+  ///         unchanged when an exception is thrown.
+  template <class NamedParameters = parameters::Default_named_parameters>
+  void load(std::istream& is, const TriangleMesh& tm,
+            const NamedParameters& np = parameters::default_values())
+  {
+    typedef Spectral_deformation_error Error;
+    Checksummed_reader in(is);
+    char tag[sizeof(format_tag)];
+    in.read_bytes(tag, sizeof(tag));
+    if(!std::equal(tag, tag + sizeof(tag), format_tag))
+      throw Error(Error::IO_ERROR, "load: the stream does not hold a manifold harmonics basis");
+    if(in.template read_value<std::uint32_t>() != format_version)
+      throw Error(Error::IO_ERROR, "load: unsupported basis file version");
+    const std::uint64_t n = in.template read_value<std::uint64_t>();
+    const std::uint64_t f = in.template read_value<std::uint64_t>();
+    const std::uint64_t m = in.template read_value<std::uint64_t>();
+    const std::uint64_t stored_fingerprint = in.template read_value<std::uint64_t>();
+
+    const Spectral_deformation::internal::Triangle_arrays arrays =
+        Spectral_deformation::internal::extract_triangle_arrays(tm, np);
+    if(n != static_cast<std::uint64_t>(arrays.number_of_vertices()) ||
+       f != static_cast<std::uint64_t>(arrays.number_of_faces()))
+      throw Error(Error::MESH_MISMATCH,
+                  "load: the basis was computed on a mesh with " + std::to_string(n) +
+                      " vertices and " + std::to_string(f) + " faces, this mesh has " +
+                      std::to_string(arrays.number_of_vertices()) + " and " +
+                      std::to_string(arrays.number_of_faces()));
+    if(stored_fingerprint != Spectral_deformation::internal::fingerprint(arrays))
+      throw Error(Error::MESH_MISMATCH, "load: the basis was computed on a different mesh "
+                                        "(connectivity or coordinates differ)");
+    if(m < 1 || m > n)
+      throw Error(Error::IO_ERROR, "load: corrupted header (number of frequencies)");
+
+    Vector eigenvalues(static_cast<Eigen::Index>(m)), mass(static_cast<Eigen::Index>(n));
+    Matrix basis(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
+    in.read_bytes(eigenvalues.data(), sizeof(double) * eigenvalues.size());
+    in.read_bytes(mass.data(), sizeof(double) * mass.size());
+    in.read_bytes(basis.data(), sizeof(double) * basis.size());
+    const std::uint64_t computed = in.checksum();
+    std::uint64_t stored = 0;
+    is.read(reinterpret_cast<char*>(&stored), sizeof(stored));
+    if(!is || stored != computed)
+      throw Error(Error::IO_ERROR, "load: the basis file is truncated or corrupted");
+    if(!eigenvalues.allFinite() || !mass.allFinite() || !basis.allFinite())
+      throw Error(Error::IO_ERROR, "load: the basis file holds non-finite values");
+
+    m_eigenvalues.swap(eigenvalues);
+    m_mass.swap(mass);
+    m_basis.swap(basis);
+    m_number_of_faces = f;
+    m_fingerprint = stored_fingerprint;
+  }
+
+  /// @}
+
+private:
+  static constexpr char format_tag[8] = {'S', 'S', 'M', 'D', 'M', 'H', 'B', '\0'};
+  static constexpr std::uint32_t format_version = 1;
+
+  static void check_rows(const Matrix& x, Eigen::Index n, const char* what)
+  {
+    if(x.rows() != n || n == 0)
+      throw Spectral_deformation_error(
+          Spectral_deformation_error::INVALID_ARGUMENT,
+          std::string(what) + ": the data must have one row per vertex of the basis");
+  }
+
+  // FNV-1a over everything written, so that a flipped byte is detected.
+  struct Checksum
+  {
+    std::uint64_t value = 1469598103934665603ull;
+    void add(const void* data, std::size_t size)
+    {
+      const unsigned char* bytes = static_cast<const unsigned char*>(data);
+      for(std::size_t i = 0; i < size; ++i)
+      {
+        value ^= bytes[i];
+        value *= 1099511628211ull;
+      }
+    }
+  };
+
+  struct Checksummed_writer
+  {
+    std::ostream& os;
+    Checksum sum;
+    explicit Checksummed_writer(std::ostream& s) : os(s) {}
+    void write_bytes(const void* data, std::size_t size)
+    {
+      os.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
+      sum.add(data, size);
+    }
+    template <class T> void write_value(const T& value) { write_bytes(&value, sizeof(T)); }
+    std::uint64_t checksum() const { return sum.value; }
+  };
+
+  struct Checksummed_reader
+  {
+    std::istream& is;
+    Checksum sum;
+    explicit Checksummed_reader(std::istream& s) : is(s) {}
+    void read_bytes(void* data, std::size_t size)
+    {
+      is.read(static_cast<char*>(data), static_cast<std::streamsize>(size));
+      if(!is)
+        throw Spectral_deformation_error(Spectral_deformation_error::IO_ERROR,
+                                         "load: the basis file is truncated or unreadable");
+      sum.add(data, size);
+    }
+    template <class T> T read_value()
+    {
+      T value;
+      read_bytes(&value, sizeof(T));
+      return value;
+    }
+    std::uint64_t checksum() const { return sum.value; }
+  };
+
+  Vector m_eigenvalues;
+  Matrix m_basis;
+  Vector m_mass;
+  std::uint64_t m_number_of_faces = 0;
+  std::uint64_t m_fingerprint = 0;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_MANIFOLD_HARMONICS_BASIS_H

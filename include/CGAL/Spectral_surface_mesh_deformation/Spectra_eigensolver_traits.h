@@ -1,0 +1,190 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_SPECTRA_EIGENSOLVER_TRAITS_H
+#define CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_SPECTRA_EIGENSOLVER_TRAITS_H
+
+#include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <Spectra/SymGEigsShiftSolver.h>
+
+#include <algorithm>
+#include <exception>
+#include <string>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+// y = (Q - sigma M)^{-1} x, with the factorization done by a sparse SPD
+// solver traits. Spectra's own SymShiftInvert uses a sparse LU, which is
+// far slower on these systems.
+template <class SparseSPDSolverTraits>
+class Shift_invert_operator
+{
+public:
+  typedef double Scalar;
+
+  Shift_invert_operator(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass)
+    : m_stiffness(stiffness), m_mass(mass)
+  {}
+
+  Eigen::Index rows() const { return m_stiffness.rows(); }
+  Eigen::Index cols() const { return m_stiffness.cols(); }
+
+  void set_shift(double sigma)
+  {
+    Eigen::SparseMatrix<double> shifted = m_stiffness;
+    for(Eigen::Index i = 0; i < m_mass.size(); ++i)
+      shifted.coeffRef(i, i) -= sigma * m_mass[i];
+    if(!m_solver.factor(shifted))
+      throw std::runtime_error("the factorization of the shifted stiffness matrix failed");
+  }
+
+  void perform_op(const double* x_in, double* y_out) const
+  {
+    m_rhs = Eigen::Map<const Eigen::VectorXd>(x_in, rows());
+    if(!m_solver.solve(m_rhs, m_solution))
+      throw std::runtime_error("a shift-invert solve failed");
+    Eigen::Map<Eigen::VectorXd>(y_out, rows()) = m_solution.col(0);
+  }
+
+private:
+  const Eigen::SparseMatrix<double>& m_stiffness;
+  const Eigen::VectorXd& m_mass;
+  SparseSPDSolverTraits m_solver;
+  mutable Eigen::MatrixXd m_rhs, m_solution;
+};
+
+// y = M x for the diagonal (lumped) mass matrix.
+class Diagonal_mass_operator
+{
+public:
+  typedef double Scalar;
+  explicit Diagonal_mass_operator(const Eigen::VectorXd& mass) : m_mass(mass) {}
+  Eigen::Index rows() const { return m_mass.size(); }
+  Eigen::Index cols() const { return m_mass.size(); }
+  void perform_op(const double* x_in, double* y_out) const
+  {
+    Eigen::Map<Eigen::VectorXd>(y_out, rows()) =
+        m_mass.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(x_in, rows()));
+  }
+
+private:
+  const Eigen::VectorXd& m_mass;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+
+/// \ingroup PkgSpectralSurfaceMeshDeformationTraits
+/// The default model of `ManifoldHarmonicsEigensolverTraits`: Spectra's
+/// shift-invert generalized symmetric Lanczos solver, with the shifted system
+/// `Q - sigma M` factored once by a sparse Cholesky/LDLᵀ.
+///
+/// The shift `sigma` is negative and small against the low end of the
+/// spectrum (`-shift_scale * 4 pi / area`, the first non-zero eigenvalue of a
+/// unit sphere scaled to the mesh area is about `8 pi / area`), so that
+/// `Q - sigma M` is positive definite even though `Q` is singular, and the
+/// wanted eigenvalues are the largest of the inverted operator.
+///
+/// Small problems (at most `dense_threshold()` vertices) and problems that ask
+/// for nearly all eigenpairs are solved with a dense solver instead, which is
+/// exact and faster at that size.
+///
+/// \tparam SparseSPDSolverTraits a model of `SparseSPDSolverTraits`, used to
+///         factor `Q - sigma M`.
+template <class SparseSPDSolverTraits = Default_sparse_spd_solver_traits>
+class Spectra_eigensolver_traits
+{
+public:
+  /// Creates a solver with a cap on Lanczos restarts, a relative tolerance on
+  /// the Ritz values, and the size at or below which the dense solver is used.
+  explicit Spectra_eigensolver_traits(int max_iterations = 1000, double tolerance = 1e-10,
+                                      Eigen::Index dense_threshold = 1000)
+    : m_max_iterations(max_iterations), m_tolerance(tolerance), m_dense_threshold(dense_threshold)
+  {}
+
+  /// The size at or below which the dense solver is used.
+  Eigen::Index dense_threshold() const { return m_dense_threshold; }
+
+  /// Computes the `m` smallest eigenpairs of `Q h = lambda M h` with
+  /// `M = diag(mass)`: `eigenvalues` ascending, `eigenvectors` (n×m)
+  /// M-orthonormal. Returns `false`, with `error_message()` set, when the
+  /// factorization fails or the iteration does not converge.
+  bool compute(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
+               Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors)
+  {
+    m_error_message.clear();
+    const Eigen::Index n = stiffness.rows();
+    if(m < 1 || m > n)
+      return fail("the number of eigenpairs must be between 1 and the number of vertices");
+    const Eigen::Index ncv = (std::min)(n, (std::max)(2 * m + 1, m + 20));
+    if(n <= m_dense_threshold || ncv >= n)
+      return compute_dense(stiffness, mass, m, eigenvalues, eigenvectors);
+
+    typedef Spectral_deformation::internal::Shift_invert_operator<SparseSPDSolverTraits> Op;
+    typedef Spectral_deformation::internal::Diagonal_mass_operator Mass_op;
+    try
+    {
+      Op op(stiffness, mass);
+      Mass_op mass_op(mass);
+      const double sigma = -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
+      Spectra::SymGEigsShiftSolver<Op, Mass_op, Spectra::GEigsMode::ShiftInvert> solver(
+          op, mass_op, m, ncv, sigma);
+      solver.init();
+      solver.compute(Spectra::SortRule::LargestMagn, m_max_iterations, m_tolerance,
+                     Spectra::SortRule::SmallestAlge);
+      if(solver.info() != Spectra::CompInfo::Successful)
+        return fail("the Lanczos iteration did not converge within " +
+                    std::to_string(m_max_iterations) + " restarts");
+      eigenvalues = solver.eigenvalues();
+      eigenvectors = solver.eigenvectors();
+    }
+    catch(const std::exception& e)
+    {
+      return fail(e.what());
+    }
+    return true;
+  }
+
+  /// The reason of the last failure of `compute()`.
+  const std::string& error_message() const { return m_error_message; }
+
+private:
+  bool compute_dense(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
+                     Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors)
+  {
+    // M^{-1/2} Q M^{-1/2} y = lambda y with h = M^{-1/2} y is the same problem,
+    // symmetric and standard because M is diagonal and positive.
+    const Eigen::VectorXd inv_sqrt_mass = mass.cwiseSqrt().cwiseInverse();
+    const Eigen::MatrixXd scaled =
+        inv_sqrt_mass.asDiagonal() * Eigen::MatrixXd(stiffness) * inv_sqrt_mass.asDiagonal();
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(scaled);
+    if(solver.info() != Eigen::Success)
+      return fail("the dense eigensolver did not converge");
+    eigenvalues = solver.eigenvalues().head(m);
+    eigenvectors = inv_sqrt_mass.asDiagonal() * solver.eigenvectors().leftCols(m);
+    return true;
+  }
+
+  bool fail(const std::string& message)
+  {
+    m_error_message = message;
+    return false;
+  }
+
+  int m_max_iterations;
+  double m_tolerance;
+  Eigen::Index m_dense_threshold;
+  std::string m_error_message;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_SPECTRA_EIGENSOLVER_TRAITS_H

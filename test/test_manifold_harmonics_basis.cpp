@@ -1,0 +1,364 @@
+#include "test_meshes.h"
+
+#include <CGAL/Manifold_harmonics_basis.h>
+#include <CGAL/Spectral_surface_mesh_deformation/cotangent_operators.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+using namespace test_meshes;
+typedef CGAL::Manifold_harmonics_basis<Surface_mesh> Basis;
+typedef CGAL::Spectral_deformation_error Error;
+
+namespace {
+
+Eigen::MatrixXd positions_of(const Surface_mesh& mesh)
+{
+  Eigen::MatrixXd x(mesh.number_of_vertices(), 3);
+  for(auto v : mesh.vertices())
+  {
+    const Point& p = mesh.point(v);
+    x.row(v.idx()) << p.x(), p.y(), p.z();
+  }
+  return x;
+}
+
+// Largest principal angle (as its sine) between the column spaces of A and B,
+// both M-orthonormal: ||B - A Aᵀ M B|| measured column-wise in the M-norm.
+double subspace_distance(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
+                         const Eigen::VectorXd& mass)
+{
+  const Eigen::MatrixXd residual = B - A * (A.transpose() * mass.asDiagonal() * B);
+  const Eigen::MatrixXd gram = residual.transpose() * mass.asDiagonal() * residual;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
+  return std::sqrt((std::max)(0.0, eig.eigenvalues().maxCoeff()));
+}
+
+template <class Function>
+Error::Code error_code_of(Function f)
+{
+  try
+  {
+    f();
+  }
+  catch(const Error& e)
+  {
+    INFO(e.what());
+    CHECK(std::string(e.what()).size() > 10);
+    return e.code();
+  }
+  FAIL("no Spectral_deformation_error was thrown");
+  return Error::INVALID_ARGUMENT;
+}
+
+} // namespace
+
+TEST_CASE("cotangent operators: symmetry, zero row sums, area, linear precision", "[operators]")
+{
+  const Surface_mesh plane = to_mesh<Surface_mesh>(bumpy_plane(12, 0.0)); // flat
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(plane);
+  const Eigen::SparseMatrix<double> M = CGAL::lumped_mass_matrix(plane);
+  const Eigen::Index n = Q.rows();
+
+  CHECK((Eigen::MatrixXd(Q) - Eigen::MatrixXd(Q).transpose()).cwiseAbs().maxCoeff() < 1e-14);
+  CHECK((Q * Eigen::VectorXd::Ones(n)).cwiseAbs().maxCoeff() < 1e-12);
+  CHECK(M.sum() == Approx(1.0).epsilon(1e-12)); // the unit square
+
+  // On a flat mesh the cotangent Laplacian of a linear function vanishes at
+  // every interior vertex.
+  const Eigen::MatrixXd x = positions_of(plane);
+  const Eigen::VectorXd linear = 2.0 * x.col(0) - 3.0 * x.col(1) + Eigen::VectorXd::Constant(n, 0.5);
+  const Eigen::VectorXd Qlinear = Q * linear;
+  for(auto v : plane.vertices())
+    if(!plane.is_border(v))
+      CHECK(std::abs(Qlinear[v.idx()]) < 1e-12);
+
+  // Positive semi-definite: xᵀQx is the Dirichlet energy, ≥ 0.
+  const Eigen::VectorXd bumpy = x.col(0).array().square() + x.col(1).array().sin();
+  CHECK(bumpy.dot(Q * bumpy) > 0);
+}
+
+TEST_CASE("sphere spectrum: l(l+1)/R^2 with multiplicities 2l+1", "[basis]")
+{
+  // 2562 vertices: above the dense threshold, so this is the Spectra path.
+  const double R = 2.0;
+  const Surface_mesh sphere = to_mesh<Surface_mesh>(icosphere(4, R));
+  const Basis basis(sphere, 25);
+  const Eigen::VectorXd& lambda = basis.eigenvalues();
+  REQUIRE(lambda.size() == 25);
+  for(Eigen::Index k = 1; k < 25; ++k)
+    CHECK(lambda[k] >= lambda[k - 1]);
+
+  // The cotangent Laplacian converges with O(h²) and the error of the l-th
+  // eigenvalue grows like l(l+1)·h²; at 2562 vertices (h ≈ 0.076·R) the
+  // measured relative error of l ≤ 4 is 0.67%. 1% leaves a margin
+  // but still separates every cluster (l=4 and l=5 differ by 50%).
+  CHECK(std::abs(lambda[0]) < 1e-8);
+  Eigen::Index k = 1;
+  for(int l = 1; l <= 4; ++l)
+  {
+    const double exact = l * (l + 1) / (R * R);
+    for(int copy = 0; copy < 2 * l + 1; ++copy, ++k)
+    {
+      INFO("l = " << l << ", eigenvalue " << k << " = " << lambda[k]);
+      CHECK(std::abs(lambda[k] - exact) < 0.01 * exact);
+    }
+  }
+}
+
+TEST_CASE("basis is M-orthonormal and solves the generalized problem", "[basis]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bar(30, 4));
+  const Basis basis(mesh, 40);
+  const Eigen::MatrixXd& H = basis.basis();
+  const Eigen::VectorXd& mass = basis.mass();
+  const Eigen::MatrixXd gram = H.transpose() * mass.asDiagonal() * H;
+  CHECK((gram - Eigen::MatrixXd::Identity(40, 40)).cwiseAbs().maxCoeff() < 1e-9);
+
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
+  for(Eigen::Index k = 0; k < 40; ++k)
+  {
+    const Eigen::VectorXd Mh = mass.cwiseProduct(H.col(k));
+    const Eigen::VectorXd residual = Q * H.col(k) - basis.eigenvalues()[k] * Mh;
+    INFO("eigenpair " << k);
+    CHECK(residual.norm() < 1e-7 * (1.0 + basis.eigenvalues()[k]) * Mh.norm());
+  }
+  // Deterministic signs: the entry of largest magnitude is positive.
+  for(Eigen::Index k = 0; k < 40; ++k)
+  {
+    Eigen::Index i;
+    H.col(k).cwiseAbs().maxCoeff(&i);
+    CHECK(H(i, k) > 0);
+  }
+}
+
+TEST_CASE("dense and Spectra solvers span the same subspace", "[basis]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(24));
+  typedef CGAL::Spectra_eigensolver_traits<> Traits;
+  const Basis lanczos(mesh, 30, CGAL::parameters::default_values(), Traits(1000, 1e-10, 0));
+  const Basis dense(mesh, 30, CGAL::parameters::default_values(), Traits(1000, 1e-10, 100000));
+  CHECK((lanczos.eigenvalues() - dense.eigenvalues()).cwiseAbs().maxCoeff() <
+        1e-8 * dense.eigenvalues().maxCoeff());
+  // Compare subspaces, not vectors: eigenvalues may be (nearly) repeated. Cut
+  // at 29 only if 29/30 is not a near-degenerate pair.
+  const double gap = dense.eigenvalues()[30 - 1] - dense.eigenvalues()[30 - 2];
+  const Eigen::Index cut = gap > 1e-6 * dense.eigenvalues()[29] ? 29 : 28;
+  CHECK(subspace_distance(dense.basis().leftCols(cut), lanczos.basis().leftCols(cut),
+                          dense.mass()) < 1e-6);
+}
+
+TEST_CASE("transform then inverse is the identity when m = n", "[basis]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(1));
+  const Eigen::Index n = static_cast<Eigen::Index>(mesh.number_of_vertices());
+  const Basis basis(mesh, static_cast<std::size_t>(n));
+  const Eigen::MatrixXd x = positions_of(mesh) + Eigen::MatrixXd::Random(n, 3);
+  const Eigen::MatrixXd coefficients = basis.transform(x);
+  CHECK(coefficients.rows() == n);
+  CHECK((basis.inverse_transform(coefficients) - x).cwiseAbs().maxCoeff() < 1e-10);
+  CHECK((basis.low_pass(x) - x).cwiseAbs().maxCoeff() < 1e-10);
+}
+
+TEST_CASE("low-pass error falls as m grows", "[basis]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(20));
+  const Basis basis(mesh, 120);
+  const Eigen::MatrixXd x = positions_of(mesh);
+  const Eigen::VectorXd& mass = basis.mass();
+  auto error = [&](std::size_t k) {
+    const Eigen::MatrixXd d = basis.low_pass(x, k) - x;
+    return std::sqrt((d.transpose() * mass.asDiagonal() * d).trace());
+  };
+  double previous = error(1);
+  for(std::size_t k : {5, 10, 20, 40, 80, 120})
+  {
+    const double e = error(k);
+    INFO("k = " << k << ": " << e << " (previous " << previous << ")");
+    CHECK(e <= previous + 1e-12);
+    previous = e;
+  }
+  CHECK(error(120) < 0.2 * error(5));
+  // The first function is constant: one frequency reproduces the centroid.
+  const Eigen::RowVector3d centroid = (mass.transpose() * x) / mass.sum();
+  CHECK((basis.low_pass(x, 1).rowwise() - centroid).cwiseAbs().maxCoeff() < 1e-10);
+}
+
+TEST_CASE("boundaries and several connected components", "[basis]")
+{
+  const Surface_mesh spheres = to_mesh<Surface_mesh>(two_spheres(3)); // 2·642 vertices
+  const Basis basis(spheres, 10);
+  // One constant function per component: two zero eigenvalues, then the
+  // l = 1 eigenvalue (≈2) of both unit spheres, six times.
+  CHECK(std::abs(basis.eigenvalues()[0]) < 1e-8);
+  CHECK(std::abs(basis.eigenvalues()[1]) < 1e-8);
+  for(int k = 2; k < 8; ++k)
+    CHECK(basis.eigenvalues()[k] == Approx(2.0).epsilon(0.02));
+
+  const Surface_mesh plane = to_mesh<Surface_mesh>(bumpy_plane(16));
+  const Basis open(plane, 10);
+  // Natural (Neumann) boundary: a single zero eigenvalue, then positive ones.
+  CHECK(std::abs(open.eigenvalues()[0]) < 1e-8);
+  CHECK(open.eigenvalues()[1] > 1.0);
+}
+
+TEST_CASE("eigenvalues scale as 1/s^2 and are invariant under rigid motions", "[basis]")
+{
+  Soup soup = bar(10, 2);
+  const Basis reference(to_mesh<Surface_mesh>(soup), 12);
+  const double s = 1e3, c = std::cos(0.7), sn = std::sin(0.7);
+  for(Point& p : soup.points)
+    p = Point(s * (c * p.x() - sn * p.y()) + 5, s * (sn * p.x() + c * p.y()) - 2, s * p.z() + 1e4);
+  const Basis moved(to_mesh<Surface_mesh>(soup), 12);
+  for(Eigen::Index k = 1; k < 12; ++k)
+    CHECK(moved.eigenvalues()[k] * s * s == Approx(reference.eigenvalues()[k]).epsilon(1e-8));
+}
+
+TEST_CASE("Surface_mesh and Polyhedron_3 give the same basis", "[basis]")
+{
+  const Soup soup = bumpy_plane(14);
+  const Surface_mesh sm = to_mesh<Surface_mesh>(soup);
+  const Polyhedron poly = to_mesh<Polyhedron>(soup);
+  const Basis a(sm, 20);
+  const CGAL::Manifold_harmonics_basis<Polyhedron> b(poly, 20);
+  CHECK((a.eigenvalues() - b.eigenvalues()).cwiseAbs().maxCoeff() < 1e-12);
+  CHECK((a.basis() - b.basis()).cwiseAbs().maxCoeff() < 1e-10);
+  CHECK(a.mesh_fingerprint() == b.mesh_fingerprint());
+}
+
+TEST_CASE("save and load: round trip, stale and corrupted files refused", "[basis][io]")
+{
+  Soup soup = bumpy_plane(10);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  const Basis basis(mesh, 15);
+  std::stringstream stream;
+  basis.save(stream);
+  const std::string bytes = stream.str();
+
+  Basis loaded;
+  CHECK(loaded.empty());
+  std::istringstream in(bytes);
+  loaded.load(in, mesh);
+  CHECK(loaded.eigenvalues() == basis.eigenvalues());
+  CHECK(loaded.basis() == basis.basis());
+  CHECK(loaded.mass() == basis.mass());
+
+  // Another mesh (one vertex moved): refused, and the target basis is untouched.
+  soup.points[7] = Point(soup.points[7].x(), soup.points[7].y(), soup.points[7].z() + 1e-9);
+  const Surface_mesh moved = to_mesh<Surface_mesh>(soup);
+  CHECK(error_code_of([&] {
+          std::istringstream s(bytes);
+          loaded.load(s, moved);
+        }) == Error::MESH_MISMATCH);
+  CHECK(loaded.basis() == basis.basis());
+  // A mesh of another size.
+  const Surface_mesh other = to_mesh<Surface_mesh>(bumpy_plane(11));
+  CHECK(error_code_of([&] {
+          std::istringstream s(bytes);
+          loaded.load(s, other);
+        }) == Error::MESH_MISMATCH);
+  // One flipped byte in the payload.
+  std::string corrupted = bytes;
+  corrupted[bytes.size() / 2] ^= 0x10;
+  CHECK(error_code_of([&] {
+          std::istringstream s(corrupted);
+          loaded.load(s, mesh);
+        }) == Error::IO_ERROR);
+  // Truncated.
+  CHECK(error_code_of([&] {
+          std::istringstream s(bytes.substr(0, bytes.size() - 100));
+          loaded.load(s, mesh);
+        }) == Error::IO_ERROR);
+  // Not a basis file.
+  CHECK(error_code_of([&] {
+          std::istringstream s("OFF\n3 1 0\n");
+          loaded.load(s, mesh);
+        }) == Error::IO_ERROR);
+  CHECK(loaded.basis() == basis.basis());
+  // Saving an empty basis.
+  CHECK(error_code_of([&] {
+          std::ostringstream s;
+          Basis().save(s);
+        }) == Error::IO_ERROR);
+}
+
+TEST_CASE("bad input gives a clear error", "[basis][errors]")
+{
+  const Soup good = bumpy_plane(6);
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(good);
+  const std::size_t n = mesh.number_of_vertices();
+
+  SECTION("number of frequencies out of range")
+  {
+    CHECK(error_code_of([&] { Basis(mesh, 0); }) == Error::INVALID_ARGUMENT);
+    CHECK(error_code_of([&] { Basis(mesh, n + 1); }) == Error::INVALID_ARGUMENT);
+  }
+  SECTION("not a triangle mesh")
+  {
+    Surface_mesh quad;
+    const auto a = quad.add_vertex(Point(0, 0, 0)), b = quad.add_vertex(Point(1, 0, 0)),
+               c = quad.add_vertex(Point(1, 1, 0)), d = quad.add_vertex(Point(0, 1, 0)),
+               e = quad.add_vertex(Point(2, 0, 0));
+    quad.add_face(a, b, c, d);
+    quad.add_face(b, e, c);
+    CHECK(error_code_of([&] { Basis(quad, 2); }) == Error::INVALID_MESH);
+    CHECK(error_code_of([&] { CGAL::cotangent_stiffness_matrix(quad); }) == Error::INVALID_MESH);
+  }
+  SECTION("empty mesh")
+  {
+    CHECK(error_code_of([&] { Basis(Surface_mesh(), 1); }) == Error::INVALID_MESH);
+  }
+  SECTION("zero-area face")
+  {
+    Soup soup = good;
+    // Collapse a triangle onto a line: its third vertex is put on its first edge.
+    const auto t = soup.triangles[10];
+    const Point& p = soup.points[t[0]];
+    const Point& q = soup.points[t[1]];
+    soup.points[t[2]] = Point((p.x() + q.x()) / 2, (p.y() + q.y()) / 2, (p.z() + q.z()) / 2);
+    CHECK(error_code_of([&] { Basis(to_mesh<Surface_mesh>(soup), 5); }) == Error::INVALID_MESH);
+  }
+  SECTION("isolated vertex")
+  {
+    Surface_mesh with_isolated = mesh;
+    with_isolated.add_vertex(Point(5, 5, 5));
+    CHECK(error_code_of([&] { Basis(with_isolated, 5); }) == Error::INVALID_MESH);
+  }
+  SECTION("non-finite coordinates")
+  {
+    for(double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    {
+      Surface_mesh broken = mesh;
+      broken.point(*broken.vertices().begin()) = Point(bad, 0, 0);
+      CHECK(error_code_of([&] { Basis(broken, 5); }) == Error::INVALID_MESH);
+    }
+  }
+  SECTION("eigensolver that does not converge")
+  {
+    // One restart and a tolerance no Lanczos run can meet; dense path disabled.
+    const Surface_mesh sphere = to_mesh<Surface_mesh>(icosphere(3));
+    CGAL::Spectra_eigensolver_traits<> hopeless(1, 1e-300, 0);
+    CHECK(error_code_of([&] { Basis(sphere, 40, CGAL::parameters::default_values(), hopeless); }) ==
+          Error::SOLVER_FAILURE);
+  }
+  SECTION("transform with the wrong number of rows")
+  {
+    const Basis basis(mesh, 5);
+    CHECK(error_code_of([&] { basis.transform(Eigen::MatrixXd::Ones(n + 1, 3)); }) ==
+          Error::INVALID_ARGUMENT);
+    CHECK(error_code_of([&] { basis.inverse_transform(Eigen::MatrixXd::Ones(6, 3)); }) ==
+          Error::INVALID_ARGUMENT);
+    CHECK(error_code_of([&] { basis.low_pass(Eigen::MatrixXd::Ones(n, 3), 6); }) ==
+          Error::INVALID_ARGUMENT);
+  }
+  SECTION("a failed compute leaves the basis unchanged")
+  {
+    Basis basis(mesh, 5);
+    const Eigen::MatrixXd before = basis.basis();
+    CHECK(error_code_of([&] { basis.compute(mesh, n + 3); }) == Error::INVALID_ARGUMENT);
+    CHECK(basis.basis() == before);
+  }
+}
