@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Configures and builds the project in Release into build/ (or $SSMD_BUILD_DIR).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${SSMD_BUILD_DIR:-$root/build}"
+jobs="${SSMD_JOBS:-$(nproc)}"
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake --build "$build" --parallel "$jobs"

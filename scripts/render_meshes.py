@@ -1,0 +1,70 @@
+#!/usr/bin/python3
+"""Render meshes headless with f3d (under xvfb-run) and put the pictures side
+by side, each with a caption, in one PNG.
+
+usage: render_meshes.py OUTPUT.png [--size 360] [--azimuth DEG] [--elevation DEG]
+                        [--up +Y] CAPTION=MESH [CAPTION=MESH ...]
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+
+from PIL import Image, ImageDraw, ImageFont
+
+
+def render(mesh, png, size, azimuth, elevation, up):
+    command = ["xvfb-run", "-a", "f3d", mesh, "--output=" + png,
+               "--resolution=%d,%d" % (size, size), "--up=" + up,
+               "--camera-azimuth-angle=%g" % azimuth,
+               "--camera-elevation-angle=%g" % elevation,
+               "--color=0.85,0.8,0.7", "--fxaa", "--bg-color=1,1,1"]
+    result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    if result.returncode != 0 or not os.path.exists(png):
+        sys.exit("rendering %s failed:\n%s" % (mesh, result.stdout.decode(errors="replace")))
+
+
+def caption_font():
+    for path in ("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",):
+        if os.path.exists(path):
+            return ImageFont.truetype(path, 18)
+    return ImageFont.load_default()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("output")
+    parser.add_argument("panels", nargs="+", metavar="CAPTION=MESH")
+    parser.add_argument("--size", type=int, default=360)
+    parser.add_argument("--azimuth", type=float, default=0.0)
+    parser.add_argument("--elevation", type=float, default=0.0)
+    parser.add_argument("--up", default="+Y")
+    args = parser.parse_args()
+
+    caption_height = 28
+    pictures = []
+    with tempfile.TemporaryDirectory() as workdir:
+        for index, panel in enumerate(args.panels):
+            caption, _, mesh = panel.rpartition("=")
+            if not mesh:
+                sys.exit("panels are given as CAPTION=MESH, got %r" % panel)
+            png = os.path.join(workdir, "%d.png" % index)
+            render(mesh, png, args.size, args.azimuth, args.elevation, args.up)
+            pictures.append((caption, Image.open(png).convert("RGB")))
+
+        sheet = Image.new("RGB", (args.size * len(pictures), args.size + caption_height), "white")
+        draw = ImageDraw.Draw(sheet)
+        font = caption_font()
+        for index, (caption, picture) in enumerate(pictures):
+            sheet.paste(picture, (index * args.size, 0))
+            width = draw.textlength(caption, font=font)
+            draw.text((index * args.size + (args.size - width) / 2, args.size + 8), caption,
+                      fill="black", font=font)
+        sheet.save(args.output)
+    print("wrote", args.output)
+
+
+if __name__ == "__main__":
+    main()
