@@ -91,23 +91,16 @@ inline Soup icosphere(int levels, double radius = 1.0)
   return soup;
 }
 
-/// A closed bar along z: a square tube of side `width` and length `length`,
+/// A closed cylinder along z of radius `radius` and length `length`:
 /// `rings` + 1 rings of 4·`per_side` vertices, capped with fans at both ends.
-inline Soup bar(int rings = 20, int per_side = 3, double width = 1.0, double length = 5.0)
+inline Soup bar(int rings = 20, int per_side = 3, double radius = 0.5, double length = 5.0)
 {
   Soup soup;
   const int ring_size = 4 * per_side;
+  const double pi = 3.14159265358979323846;
   auto ring_point = [&](int k) {
-    const int side = k / per_side;
-    const double s = double(k % per_side) / per_side;
-    const double h = width / 2;
-    switch(side)
-    {
-    case 0: return std::array<double, 2>{-h + s * width, -h};
-    case 1: return std::array<double, 2>{h, -h + s * width};
-    case 2: return std::array<double, 2>{h - s * width, h};
-    default: return std::array<double, 2>{-h, h - s * width};
-    }
+    const double angle = 2 * pi * k / ring_size;
+    return std::array<double, 2>{radius * std::cos(angle), radius * std::sin(angle)};
   };
   for(int r = 0; r <= rings; ++r)
     for(int k = 0; k < ring_size; ++k)
@@ -119,8 +112,18 @@ inline Soup bar(int rings = 20, int per_side = 3, double width = 1.0, double len
   for(int r = 0; r < rings; ++r)
     for(int k = 0; k < ring_size; ++k)
     {
-      soup.triangles.push_back({id(r, k), id(r, k + 1), id(r + 1, k + 1)});
-      soup.triangles.push_back({id(r, k), id(r + 1, k + 1), id(r + 1, k)});
+      // Alternating diagonals: a triangulation with all diagonals along one
+      // helix direction is anisotropic and biases twists.
+      if((r + k) % 2 == 0)
+      {
+        soup.triangles.push_back({id(r, k), id(r, k + 1), id(r + 1, k + 1)});
+        soup.triangles.push_back({id(r, k), id(r + 1, k + 1), id(r + 1, k)});
+      }
+      else
+      {
+        soup.triangles.push_back({id(r, k), id(r, k + 1), id(r + 1, k)});
+        soup.triangles.push_back({id(r, k + 1), id(r + 1, k + 1), id(r + 1, k)});
+      }
     }
   const std::size_t bottom = soup.points.size();
   soup.points.emplace_back(0, 0, 0);

@@ -188,7 +188,8 @@ public:
 
   /// The inverse transform `H_k x̃` of `k × d` coefficients, `k ≤ m` (the
   /// first `k` frequencies are used), an `n × d` matrix.
-  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `k > m`.
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `k > m` or
+  ///         when the basis is empty.
   Matrix inverse_transform(const Matrix& coefficients) const
   {
     if(coefficients.rows() > m_basis.cols() || empty())

@@ -88,8 +88,8 @@ private:
 /// `Q - sigma M` factored once by a sparse Cholesky/LDLᵀ.
 ///
 /// The shift `sigma` is negative and small against the low end of the
-/// spectrum (`-shift_scale * 4 pi / area`, the first non-zero eigenvalue of a
-/// unit sphere scaled to the mesh area is about `8 pi / area`), so that
+/// spectrum (`sigma = -0.01 * 4 pi / area`, while the first non-zero
+/// eigenvalue of a sphere of the same area is `8 pi / area`), so that
 /// `Q - sigma M` is positive definite even though `Q` is singular, and the
 /// wanted eigenvalues are the largest of the inverted operator.
 ///

@@ -167,6 +167,44 @@ Triangle_arrays extract_triangle_arrays(const TriangleMesh& tm, const NamedParam
   return extract_triangle_arrays(tm, vpm, vim);
 }
 
+/// The connected component of every vertex (components numbered from 0 in
+/// the order of their first vertex), and their number.
+inline std::vector<int> connected_components(const Triangles& triangles, Eigen::Index n,
+                                             int& number_of_components)
+{
+  std::vector<int> parent(static_cast<std::size_t>(n));
+  for(std::size_t i = 0; i < parent.size(); ++i)
+    parent[i] = static_cast<int>(i);
+  auto find = [&parent](int i) {
+    while(parent[static_cast<std::size_t>(i)] != i)
+    {
+      parent[static_cast<std::size_t>(i)] =
+          parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+      i = parent[static_cast<std::size_t>(i)];
+    }
+    return i;
+  };
+  for(Eigen::Index f = 0; f < triangles.rows(); ++f)
+    for(int k = 1; k < 3; ++k)
+    {
+      const int a = find(triangles(f, 0)), b = find(triangles(f, k));
+      if(a != b)
+        parent[static_cast<std::size_t>((std::max)(a, b))] = (std::min)(a, b);
+    }
+  std::vector<int> component(static_cast<std::size_t>(n), -1);
+  std::vector<int> label_of_root(static_cast<std::size_t>(n), -1);
+  number_of_components = 0;
+  for(Eigen::Index i = 0; i < n; ++i)
+  {
+    const int root = find(static_cast<int>(i));
+    int& label = label_of_root[static_cast<std::size_t>(root)];
+    if(label < 0)
+      label = number_of_components++;
+    component[static_cast<std::size_t>(i)] = label;
+  }
+  return component;
+}
+
 /// A 64-bit FNV-1a digest of the connectivity and the exact coordinates: it
 /// identifies the mesh a stored basis belongs to.
 inline std::uint64_t fingerprint(const Triangle_arrays& mesh)

@@ -1,0 +1,161 @@
+#include "test_meshes.h"
+
+#include <CGAL/Dual_mesh_laplacian.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace test_meshes;
+typedef CGAL::Dual_mesh_laplacian<Surface_mesh> Dual;
+typedef Dual::Positions Positions;
+typedef CGAL::Spectral_deformation_error Error;
+
+namespace {
+
+Positions rigidly_moved(const Positions& x, double scale)
+{
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+  return ((scale * x * R.transpose()).rowwise() + Eigen::RowVector3d(4.0, -2.0, 7.5)).eval();
+}
+
+} // namespace
+
+TEST_CASE("dual Laplacian weights sum to one and the coordinate is normal", "[dual]")
+{
+  for(const Soup& soup : {bumpy_plane(12), icosphere(3), bar(12, 3)})
+  {
+    const Dual dual(to_mesh<Surface_mesh>(soup));
+    const Dual::Coordinates& c = dual.rest_coordinates();
+    REQUIRE(dual.number_of_rows() > 0);
+    CHECK(c.degenerate_rows == 0);
+    CHECK((c.weights.rowwise().sum().array() - 1.0).abs().maxCoeff() < 1e-12);
+    for(Eigen::Index r = 0; r < dual.number_of_rows(); ++r)
+    {
+      const Eigen::Vector3d l = c.coordinates.row(r).transpose();
+      const Eigen::Vector3d n = c.normals.row(r).transpose();
+      CHECK(std::abs(n.norm() - 1.0) < 1e-12);
+      CHECK(l.cross(n).norm() < 1e-12 * (1.0 + l.norm()));
+      CHECK((l + c.heights[r] * n).norm() < 1e-12);
+    }
+    // The operator reproduces the coordinates and annihilates constants.
+    const Eigen::SparseMatrix<double> LF = dual.laplacian_operator();
+    CHECK((LF * dual.positions() - c.coordinates).cwiseAbs().maxCoeff() < 1e-12);
+    CHECK((LF * Eigen::VectorXd::Ones(dual.number_of_vertices())).cwiseAbs().maxCoeff() < 1e-13);
+    // F has three entries 1/3 per row.
+    const Eigen::SparseMatrix<double> F = dual.centroid_operator();
+    CHECK((F * Eigen::VectorXd::Ones(dual.number_of_vertices()) -
+           Eigen::VectorXd::Ones(dual.number_of_dual_vertices()))
+              .cwiseAbs()
+              .maxCoeff() < 1e-14);
+  }
+}
+
+TEST_CASE("on a sphere every dual coordinate points inwards", "[dual]")
+{
+  // Outward-oriented convex surface: the dual vertex lies outside the plane of
+  // its neighbours, so h > 0 and the normal points outwards.
+  const Dual dual(to_mesh<Surface_mesh>(icosphere(3)));
+  const Dual::Coordinates& c = dual.rest_coordinates();
+  const Positions centroids = dual.dual_vertices(dual.positions());
+  for(Eigen::Index r = 0; r < dual.number_of_rows(); ++r)
+  {
+    CHECK(c.heights[r] > 0);
+    CHECK(c.normals.row(r).dot(centroids.row(dual.face_index_of_row(r))) > 0);
+  }
+}
+
+TEST_CASE("weights are invariant under rigid motion and scaling", "[dual]")
+{
+  const Dual dual(to_mesh<Surface_mesh>(bumpy_plane(10)));
+  const double s = 3.7;
+  const Dual::Coordinates moved = dual.evaluate(rigidly_moved(dual.positions(), s));
+  const Dual::Coordinates& rest = dual.rest_coordinates();
+  CHECK((moved.weights - rest.weights).cwiseAbs().maxCoeff() < 1e-11);
+  CHECK((moved.heights - s * rest.heights).cwiseAbs().maxCoeff() < 1e-11);
+  // Normals turn with the rotation.
+  const Positions turned = rigidly_moved(rest.normals, 1.0).rowwise() - Eigen::RowVector3d(4.0, -2.0, 7.5);
+  CHECK((moved.normals - turned).cwiseAbs().maxCoeff() < 1e-11);
+}
+
+TEST_CASE("dual neighbours: order ab, bc, ca and no row on the border", "[dual]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(6));
+  const Dual dual(mesh);
+  std::vector<std::array<int, 3>> triangles;
+  for(auto f : mesh.faces())
+  {
+    std::array<int, 3> t;
+    int k = 0;
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      t[k++] = int(v.idx());
+    triangles.push_back(t);
+  }
+  Eigen::Index faces_with_three = 0;
+  for(Eigen::Index f = 0; f < dual.number_of_dual_vertices(); ++f)
+  {
+    const auto nb = dual.dual_neighbours(f);
+    int count = 0;
+    for(int k = 0; k < 3; ++k)
+    {
+      if(nb[k] < 0)
+        continue;
+      ++count;
+      // The neighbour across edge (t[k], t[k+1]) holds that edge reversed.
+      const auto& t = triangles[std::size_t(f)];
+      const auto& g = triangles[std::size_t(nb[k])];
+      bool found = false;
+      for(int j = 0; j < 3; ++j)
+        found = found || (g[j] == t[(k + 1) % 3] && g[(j + 1) % 3] == t[k]);
+      CHECK(found);
+    }
+    faces_with_three += (count == 3);
+  }
+  CHECK(dual.number_of_rows() == faces_with_three);
+  CHECK(dual.number_of_rows() < dual.number_of_dual_vertices());
+  for(Eigen::Index r = 0; r < dual.number_of_rows(); ++r)
+    CHECK(dual.face_of_row(r) == *std::next(mesh.faces().begin(), dual.face_index_of_row(r)));
+}
+
+TEST_CASE("degenerate neighbour triangles fall back to uniform weights and keep the frame", "[dual]")
+{
+  const Dual dual(to_mesh<Surface_mesh>(icosphere(2)));
+  // Flatten every vertex onto a line: all neighbour triangles are degenerate.
+  Positions line = dual.positions();
+  line.col(1).setZero();
+  line.col(2).setZero();
+  const Positions previous = dual.rest_coordinates().normals;
+  const Dual::Coordinates c = dual.evaluate(line, &previous);
+  CHECK(c.degenerate_rows == dual.number_of_rows());
+  CHECK((c.weights.array() - 1.0 / 3.0).abs().maxCoeff() < 1e-15);
+  CHECK(c.normals == previous);
+  CHECK(c.heights.allFinite());
+  CHECK(c.coordinates.allFinite());
+}
+
+TEST_CASE("Surface_mesh and Polyhedron_3 give the same dual coordinates", "[dual]")
+{
+  const Soup soup = bar(8, 2);
+  const Dual a(to_mesh<Surface_mesh>(soup));
+  const CGAL::Dual_mesh_laplacian<Polyhedron> b(to_mesh<Polyhedron>(soup));
+  REQUIRE(a.number_of_rows() == b.number_of_rows());
+  CHECK((a.rest_coordinates().weights - b.rest_coordinates().weights).cwiseAbs().maxCoeff() == 0.0);
+  CHECK((a.rest_coordinates().heights - b.rest_coordinates().heights).cwiseAbs().maxCoeff() == 0.0);
+}
+
+TEST_CASE("non-manifold and inconsistently oriented faces are refused", "[dual][errors]")
+{
+  using CGAL::Spectral_deformation::internal::Dual_mesh_operator;
+  CGAL::Spectral_deformation::internal::Triangles three_on_an_edge(3, 3);
+  three_on_an_edge << 0, 1, 2, 1, 0, 3, 1, 0, 4;
+  CHECK_THROWS_AS(Dual_mesh_operator(three_on_an_edge, 5), Error);
+  CGAL::Spectral_deformation::internal::Triangles flipped(2, 3);
+  flipped << 0, 1, 2, 0, 1, 3;
+  CHECK_THROWS_AS(Dual_mesh_operator(flipped, 4), Error);
+  Surface_mesh quad;
+  const auto a = quad.add_vertex(Point(0, 0, 0)), b = quad.add_vertex(Point(1, 0, 0)),
+             c = quad.add_vertex(Point(1, 1, 0)), d = quad.add_vertex(Point(0, 1, 0));
+  quad.add_face(a, b, c, d);
+  CHECK_THROWS_AS(Dual(quad), Error);
+}
