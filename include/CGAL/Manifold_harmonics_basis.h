@@ -11,6 +11,7 @@
 #include <CGAL/Spectral_surface_mesh_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_surface_mesh_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/basis_io.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Named_function_parameters.h>
@@ -146,31 +147,35 @@ public:
     Spectral_deformation::internal::compute_manifold_harmonics(
         arrays, static_cast<Eigen::Index>(number_of_frequencies), eigensolver, eigenvalues,
         eigenvectors, mass);
-    m_eigenvalues.swap(eigenvalues);
-    m_basis.swap(eigenvectors);
-    m_mass.swap(mass);
-    m_number_of_faces = static_cast<std::uint64_t>(arrays.number_of_faces());
-    m_fingerprint = Spectral_deformation::internal::fingerprint(arrays);
+    m_data.eigenvalues.swap(eigenvalues);
+    m_data.basis.swap(eigenvectors);
+    m_data.mass.swap(mass);
+    m_data.number_of_faces = static_cast<std::uint64_t>(arrays.number_of_faces());
+    m_data.fingerprint = Spectral_deformation::internal::fingerprint(arrays);
   }
 
   /// \name Accessors
   /// @{
 
   /// `true` when no basis has been computed or loaded.
-  bool empty() const { return m_basis.size() == 0; }
+  bool empty() const { return m_data.basis.size() == 0; }
   /// The number of vertices `n` of the mesh.
-  std::size_t number_of_vertices() const { return static_cast<std::size_t>(m_basis.rows()); }
+  std::size_t number_of_vertices() const { return static_cast<std::size_t>(m_data.basis.rows()); }
   /// The number of basis functions `m`.
-  std::size_t number_of_frequencies() const { return static_cast<std::size_t>(m_basis.cols()); }
+  std::size_t number_of_frequencies() const { return static_cast<std::size_t>(m_data.basis.cols()); }
   /// The eigenvalues, ascending (`m`).
-  const Vector& eigenvalues() const { return m_eigenvalues; }
+  const Vector& eigenvalues() const { return m_data.eigenvalues; }
   /// The basis `H` (`n × m`), M-orthonormal.
-  const Matrix& basis() const { return m_basis; }
+  const Matrix& basis() const { return m_data.basis; }
   /// The diagonal of the lumped mass matrix `M` (`n`).
-  const Vector& mass() const { return m_mass; }
+  const Vector& mass() const { return m_data.mass; }
   /// A digest of the connectivity and coordinates of the mesh the basis was
   /// computed on; `load()` compares it with the mesh it is given.
-  std::uint64_t mesh_fingerprint() const { return m_fingerprint; }
+  std::uint64_t mesh_fingerprint() const { return m_data.fingerprint; }
+
+  /// \cond SKIP_IN_MANUAL
+  const Spectral_deformation::internal::Basis_data& data() const { return m_data; }
+  /// \endcond
 
   /// @}
 
@@ -182,8 +187,8 @@ public:
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `x` does not have `n` rows.
   Matrix transform(const Matrix& x) const
   {
-    check_rows(x, m_basis.rows(), "transform");
-    return m_basis.transpose() * (m_mass.asDiagonal() * x);
+    check_rows(x, m_data.basis.rows(), "transform");
+    return m_data.basis.transpose() * (m_data.mass.asDiagonal() * x);
   }
 
   /// The inverse transform `H_k x̃` of `k × d` coefficients, `k ≤ m` (the
@@ -192,11 +197,11 @@ public:
   ///         when the basis is empty.
   Matrix inverse_transform(const Matrix& coefficients) const
   {
-    if(coefficients.rows() > m_basis.cols() || empty())
+    if(coefficients.rows() > m_data.basis.cols() || empty())
       throw Spectral_deformation_error(
           Spectral_deformation_error::INVALID_ARGUMENT,
           "inverse_transform: more coefficients than basis functions");
-    return m_basis.leftCols(coefficients.rows()) * coefficients;
+    return m_data.basis.leftCols(coefficients.rows()) * coefficients;
   }
 
   /// The low-pass reconstruction of per-vertex data `x` (`n × d`) with the
@@ -205,13 +210,13 @@ public:
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) on a size mismatch.
   Matrix low_pass(const Matrix& x, std::size_t k = 0) const
   {
-    check_rows(x, m_basis.rows(), "low_pass");
-    const Eigen::Index used = (k == 0) ? m_basis.cols() : static_cast<Eigen::Index>(k);
-    if(used > m_basis.cols())
+    check_rows(x, m_data.basis.rows(), "low_pass");
+    const Eigen::Index used = (k == 0) ? m_data.basis.cols() : static_cast<Eigen::Index>(k);
+    if(used > m_data.basis.cols())
       throw Spectral_deformation_error(Spectral_deformation_error::INVALID_ARGUMENT,
                                        "low_pass: more frequencies requested than computed");
-    const auto Hk = m_basis.leftCols(used);
-    return Hk * (Hk.transpose() * (m_mass.asDiagonal() * x));
+    const auto Hk = m_data.basis.leftCols(used);
+    return Hk * (Hk.transpose() * (m_data.mass.asDiagonal() * x));
   }
 
   /// @}
@@ -226,23 +231,10 @@ public:
   ///         the stream fails.
   void save(std::ostream& os) const
   {
-    typedef Spectral_deformation_error Error;
     if(empty())
-      throw Error(Error::IO_ERROR, "save: the basis is empty");
-    Checksummed_writer out(os);
-    out.write_bytes(format_tag, sizeof(format_tag));
-    out.write_value(format_version);
-    out.write_value(static_cast<std::uint64_t>(m_basis.rows()));
-    out.write_value(m_number_of_faces);
-    out.write_value(static_cast<std::uint64_t>(m_basis.cols()));
-    out.write_value(m_fingerprint);
-    out.write_bytes(m_eigenvalues.data(), sizeof(double) * m_eigenvalues.size());
-    out.write_bytes(m_mass.data(), sizeof(double) * m_mass.size());
-    out.write_bytes(m_basis.data(), sizeof(double) * m_basis.size());
-    const std::uint64_t checksum = out.checksum();
-    os.write(reinterpret_cast<const char*>(&checksum), sizeof(checksum));
-    if(!os)
-      throw Error(Error::IO_ERROR, "save: writing the basis failed");
+      throw Spectral_deformation_error(Spectral_deformation_error::IO_ERROR,
+                                       "save: the basis is empty");
+    Spectral_deformation::internal::write_basis(os, m_data);
   }
 
   /// Reads a basis written by `save()` and checks that it belongs to `tm`
@@ -257,60 +249,15 @@ public:
   void load(std::istream& is, const TriangleMesh& tm,
             const NamedParameters& np = parameters::default_values())
   {
-    typedef Spectral_deformation_error Error;
-    Checksummed_reader in(is);
-    char tag[sizeof(format_tag)];
-    in.read_bytes(tag, sizeof(tag));
-    if(!std::equal(tag, tag + sizeof(tag), format_tag))
-      throw Error(Error::IO_ERROR, "load: the stream does not hold a manifold harmonics basis");
-    if(in.template read_value<std::uint32_t>() != format_version)
-      throw Error(Error::IO_ERROR, "load: unsupported basis file version");
-    const std::uint64_t n = in.template read_value<std::uint64_t>();
-    const std::uint64_t f = in.template read_value<std::uint64_t>();
-    const std::uint64_t m = in.template read_value<std::uint64_t>();
-    const std::uint64_t stored_fingerprint = in.template read_value<std::uint64_t>();
-
-    const Spectral_deformation::internal::Triangle_arrays arrays =
-        Spectral_deformation::internal::extract_triangle_arrays(tm, np);
-    if(n != static_cast<std::uint64_t>(arrays.number_of_vertices()) ||
-       f != static_cast<std::uint64_t>(arrays.number_of_faces()))
-      throw Error(Error::MESH_MISMATCH,
-                  "load: the basis was computed on a mesh with " + std::to_string(n) +
-                      " vertices and " + std::to_string(f) + " faces, this mesh has " +
-                      std::to_string(arrays.number_of_vertices()) + " and " +
-                      std::to_string(arrays.number_of_faces()));
-    if(stored_fingerprint != Spectral_deformation::internal::fingerprint(arrays))
-      throw Error(Error::MESH_MISMATCH, "load: the basis was computed on a different mesh "
-                                        "(connectivity or coordinates differ)");
-    if(m < 1 || m > n)
-      throw Error(Error::IO_ERROR, "load: corrupted header (number of frequencies)");
-
-    Vector eigenvalues(static_cast<Eigen::Index>(m)), mass(static_cast<Eigen::Index>(n));
-    Matrix basis(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
-    in.read_bytes(eigenvalues.data(), sizeof(double) * eigenvalues.size());
-    in.read_bytes(mass.data(), sizeof(double) * mass.size());
-    in.read_bytes(basis.data(), sizeof(double) * basis.size());
-    const std::uint64_t computed = in.checksum();
-    std::uint64_t stored = 0;
-    is.read(reinterpret_cast<char*>(&stored), sizeof(stored));
-    if(!is || stored != computed)
-      throw Error(Error::IO_ERROR, "load: the basis file is truncated or corrupted");
-    if(!eigenvalues.allFinite() || !mass.allFinite() || !basis.allFinite())
-      throw Error(Error::IO_ERROR, "load: the basis file holds non-finite values");
-
-    m_eigenvalues.swap(eigenvalues);
-    m_mass.swap(mass);
-    m_basis.swap(basis);
-    m_number_of_faces = f;
-    m_fingerprint = stored_fingerprint;
+    Spectral_deformation::internal::Basis_data data = Spectral_deformation::internal::read_basis(is);
+    Spectral_deformation::internal::check_basis_matches(
+        data, Spectral_deformation::internal::extract_triangle_arrays(tm, np));
+    m_data = std::move(data);
   }
 
   /// @}
 
 private:
-  static constexpr char format_tag[8] = {'S', 'S', 'M', 'D', 'M', 'H', 'B', '\0'};
-  static constexpr std::uint32_t format_version = 1;
-
   static void check_rows(const Matrix& x, Eigen::Index n, const char* what)
   {
     if(x.rows() != n || n == 0)
@@ -319,62 +266,7 @@ private:
           std::string(what) + ": the data must have one row per vertex of the basis");
   }
 
-  // FNV-1a over everything written, so that a flipped byte is detected.
-  struct Checksum
-  {
-    std::uint64_t value = 1469598103934665603ull;
-    void add(const void* data, std::size_t size)
-    {
-      const unsigned char* bytes = static_cast<const unsigned char*>(data);
-      for(std::size_t i = 0; i < size; ++i)
-      {
-        value ^= bytes[i];
-        value *= 1099511628211ull;
-      }
-    }
-  };
-
-  struct Checksummed_writer
-  {
-    std::ostream& os;
-    Checksum sum;
-    explicit Checksummed_writer(std::ostream& s) : os(s) {}
-    void write_bytes(const void* data, std::size_t size)
-    {
-      os.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-      sum.add(data, size);
-    }
-    template <class T> void write_value(const T& value) { write_bytes(&value, sizeof(T)); }
-    std::uint64_t checksum() const { return sum.value; }
-  };
-
-  struct Checksummed_reader
-  {
-    std::istream& is;
-    Checksum sum;
-    explicit Checksummed_reader(std::istream& s) : is(s) {}
-    void read_bytes(void* data, std::size_t size)
-    {
-      is.read(static_cast<char*>(data), static_cast<std::streamsize>(size));
-      if(!is)
-        throw Spectral_deformation_error(Spectral_deformation_error::IO_ERROR,
-                                         "load: the basis file is truncated or unreadable");
-      sum.add(data, size);
-    }
-    template <class T> T read_value()
-    {
-      T value;
-      read_bytes(&value, sizeof(T));
-      return value;
-    }
-    std::uint64_t checksum() const { return sum.value; }
-  };
-
-  Vector m_eigenvalues;
-  Matrix m_basis;
-  Vector m_mass;
-  std::uint64_t m_number_of_faces = 0;
-  std::uint64_t m_fingerprint = 0;
+  Spectral_deformation::internal::Basis_data m_data;
 };
 
 } // namespace CGAL

@@ -8,6 +8,7 @@
 #define CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_INTERNAL_SPATIAL_DUAL_LAPLACIAN_SOLVER_H
 
 #include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Dirichlet_system.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Dual_mesh_operator.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Iteration_report.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
@@ -86,34 +87,7 @@ public:
     const Eigen::SparseMatrix<double> normal = m_LF_transpose * m_LF;
     if(m_hard)
     {
-      // Number the free vertices, then take the free-free block.
-      m_free_index.assign(static_cast<std::size_t>(n), -1);
-      m_free.clear();
-      for(Eigen::Index i = 0; i < n; ++i)
-        if(!m_is_constrained[static_cast<std::size_t>(i)])
-        {
-          m_free_index[static_cast<std::size_t>(i)] = static_cast<int>(m_free.size());
-          m_free.push_back(static_cast<int>(i));
-        }
-      std::vector<Eigen::Triplet<double>> free_entries, coupling_entries;
-      for(int k = 0; k < normal.outerSize(); ++k)
-        for(Eigen::SparseMatrix<double>::InnerIterator it(normal, k); it; ++it)
-        {
-          const int row = m_free_index[static_cast<std::size_t>(it.row())];
-          if(row < 0)
-            continue;
-          const int col = m_free_index[static_cast<std::size_t>(it.col())];
-          if(col >= 0)
-            free_entries.emplace_back(row, col, it.value());
-          else
-            coupling_entries.emplace_back(row, static_cast<int>(it.col()), it.value());
-        }
-      const Eigen::Index free_count = static_cast<Eigen::Index>(m_free.size());
-      Eigen::SparseMatrix<double> A(free_count, free_count);
-      A.setFromTriplets(free_entries.begin(), free_entries.end());
-      m_coupling.resize(free_count, n);
-      m_coupling.setFromTriplets(coupling_entries.begin(), coupling_entries.end());
-      if(free_count > 0 && !m_solver.factor(A))
+      if(!m_hard_system.factor(normal, m_is_constrained))
         return fail("the dual Laplacian system is singular: every connected part of the "
                     "mesh needs a constrained vertex");
     }
@@ -189,21 +163,13 @@ private:
     out.resize(n, 3);
     if(m_hard)
     {
-      Eigen::MatrixXd constrained_positions = Eigen::MatrixXd::Zero(n, 3);
+      Eigen::MatrixXd prescribed(n, 3);
       for(std::size_t k = 0; k < m_constrained.size(); ++k)
-        constrained_positions.row(m_constrained[k]) = targets.row(static_cast<Eigen::Index>(k));
-      const Eigen::MatrixXd coupled = m_coupling * constrained_positions;
-      Eigen::MatrixXd rhs(static_cast<Eigen::Index>(m_free.size()), 3);
-      for(std::size_t r = 0; r < m_free.size(); ++r)
-        rhs.row(static_cast<Eigen::Index>(r)) =
-            rhs_all.row(m_free[r]) - coupled.row(static_cast<Eigen::Index>(r));
+        prescribed.row(m_constrained[k]) = targets.row(static_cast<Eigen::Index>(k));
       Eigen::MatrixXd x;
-      if(!m_free.empty() && !m_solver.solve(rhs, x))
+      if(!m_hard_system.solve(rhs_all, prescribed, x))
         return false;
-      for(std::size_t r = 0; r < m_free.size(); ++r)
-        out.row(m_free[r]) = x.row(static_cast<Eigen::Index>(r));
-      for(std::size_t k = 0; k < m_constrained.size(); ++k)
-        out.row(m_constrained[k]) = targets.row(static_cast<Eigen::Index>(k));
+      out = x;
       return true;
     }
     Eigen::MatrixXd rhs = rhs_all;
@@ -233,9 +199,7 @@ private:
 
   std::vector<int> m_constrained;
   std::vector<char> m_is_constrained;
-  std::vector<int> m_free;
-  std::vector<int> m_free_index;
-  Eigen::SparseMatrix<double> m_coupling;
+  Dirichlet_system<SparseSPDSolverTraits> m_hard_system;
   bool m_hard = true;
   double m_weight = 0;
   bool m_factored = false;

@@ -1,0 +1,198 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_INTERNAL_DETAIL_TRANSFER_H
+#define CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_INTERNAL_DETAIL_TRANSFER_H
+
+#include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_surface_mesh_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Dirichlet_system.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// Deformation transfer (Botsch et al. 2006): the deformation gradient of
+/// every face of a smooth mesh, T = E' E⁻¹ with E = [e1, e2, n/√|n|], is
+/// applied to the gradients of the same face of the detailed mesh, and the
+/// detailed positions are recovered by the Poisson system
+/// Q Y = Σ_f Σ_{ij∈f} ½cot_f(ij) T_f (v_i - v_j), Q the cotangent stiffness of
+/// the detailed mesh (the gradient form of min Σ_f A_f |∇Y - T_f ∇V|²).
+///
+/// Two ways to fix the free translation of each connected component:
+/// - soft: one pinned vertex per component, factored once per mesh; the
+///   translation is then fitted to the constrained vertices;
+/// - exact: a Dirichlet problem with prescribed vertices, factored once per
+///   set of prescribed vertices; they keep their prescribed positions exactly.
+template <class SparseSPDSolverTraits = Default_sparse_spd_solver_traits>
+class Detail_transfer
+{
+public:
+  /// `detailed` validated; `smooth_rest` the smooth positions of the same
+  /// connectivity. Throws `Spectral_deformation_error` when a smooth face is
+  /// degenerate or the factorization fails.
+  void initialize(const Triangle_arrays& detailed, const Positions& smooth_rest)
+  {
+    typedef Spectral_deformation_error Error;
+    m_rest = detailed.positions;
+    m_triangles = detailed.triangles;
+    m_stiffness = cotangent_stiffness(detailed);
+    const Eigen::Index f_count = detailed.number_of_faces();
+    m_half_cotangents.resize(f_count, 3);
+    m_inverse_frames.resize(static_cast<std::size_t>(f_count));
+    for(Eigen::Index f = 0; f < f_count; ++f)
+    {
+      for(int k = 0; k < 3; ++k)
+      {
+        const Eigen::Vector3d u = corner_edge(m_rest, f, k, 1), v = corner_edge(m_rest, f, k, 2);
+        m_half_cotangents(f, k) = 0.5 * u.dot(v) / u.cross(v).norm();
+      }
+      const Eigen::Matrix3d E = frame(smooth_rest, f);
+      Eigen::FullPivLU<Eigen::Matrix3d> lu(E);
+      if(!lu.isInvertible() || !E.allFinite())
+        throw Error(Error::SOLVER_FAILURE, "face " + std::to_string(f) +
+                                               " of the smooth mesh is degenerate: use more "
+                                               "frequencies");
+      m_inverse_frames[static_cast<std::size_t>(f)] = lu.inverse();
+    }
+
+    // Soft policy: pin the first vertex of every component.
+    m_component = connected_components(m_triangles, m_rest.rows(), m_number_of_components);
+    std::vector<char> pinned(static_cast<std::size_t>(m_rest.rows()), 0);
+    std::vector<char> seen(static_cast<std::size_t>(m_number_of_components), 0);
+    for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
+    {
+      const int c = m_component[static_cast<std::size_t>(i)];
+      if(!seen[static_cast<std::size_t>(c)])
+      {
+        seen[static_cast<std::size_t>(c)] = 1;
+        pinned[static_cast<std::size_t>(i)] = 1;
+      }
+    }
+    if(!m_pinned.factor(m_stiffness, pinned))
+      throw Error(Error::SOLVER_FAILURE, "the factorization of the detail transfer system failed");
+    m_dirichlet_ready = false;
+  }
+
+  /// Exact policy: factor the system with the vertices flagged in
+  /// `prescribed` fixed. Returns false when a component has no prescribed
+  /// vertex or the factorization fails.
+  bool prepare_dirichlet(const std::vector<char>& prescribed)
+  {
+    m_dirichlet_ready = false;
+    std::vector<char> component_has(static_cast<std::size_t>(m_number_of_components), 0);
+    for(std::size_t i = 0; i < prescribed.size(); ++i)
+      if(prescribed[i])
+        component_has[static_cast<std::size_t>(m_component[i])] = 1;
+    for(char has : component_has)
+      if(!has)
+        return false;
+    m_dirichlet_ready = m_dirichlet.factor(m_stiffness, prescribed);
+    return m_dirichlet_ready;
+  }
+
+  /// The Poisson right-hand side for the smooth deformed positions.
+  Eigen::MatrixXd right_hand_side(const Positions& smooth_deformed) const
+  {
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m_rest.rows(), 3);
+    for(Eigen::Index f = 0; f < m_triangles.rows(); ++f)
+    {
+      const Eigen::Matrix3d T = frame(smooth_deformed, f) * m_inverse_frames[static_cast<std::size_t>(f)];
+      for(int k = 0; k < 3; ++k)
+      {
+        const int i = m_triangles(f, (k + 1) % 3), j = m_triangles(f, (k + 2) % 3);
+        const Eigen::RowVector3d d =
+            m_half_cotangents(f, k) * (T * (m_rest.row(i) - m_rest.row(j)).transpose()).transpose();
+        rhs.row(i) += d;
+        rhs.row(j) -= d;
+      }
+    }
+    return rhs;
+  }
+
+  /// Soft policy: positions whose translation per component is the mean
+  /// offset to `targets` at the `constrained` vertices. Returns false when a
+  /// solve fails.
+  bool transfer_soft(const Positions& smooth_deformed, const std::vector<int>& constrained,
+                     const Positions& targets, Positions& result) const
+  {
+    Eigen::MatrixXd y;
+    if(!m_pinned.solve(right_hand_side(smooth_deformed), Eigen::MatrixXd::Zero(m_rest.rows(), 3), y))
+      return false;
+    Eigen::MatrixXd offset = Eigen::MatrixXd::Zero(m_number_of_components, 3);
+    Eigen::VectorXd count = Eigen::VectorXd::Zero(m_number_of_components);
+    for(std::size_t k = 0; k < constrained.size(); ++k)
+    {
+      const int c = m_component[static_cast<std::size_t>(constrained[k])];
+      offset.row(c) += targets.row(static_cast<Eigen::Index>(k)) - y.row(constrained[k]);
+      count[c] += 1;
+    }
+    for(int c = 0; c < m_number_of_components; ++c)
+      if(count[c] > 0)
+        offset.row(c) /= count[c];
+    result.resize(m_rest.rows(), 3);
+    for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
+      result.row(i) = y.row(i) + offset.row(m_component[static_cast<std::size_t>(i)]);
+    return result.allFinite();
+  }
+
+  /// Exact policy: positions with the prescribed vertices at `prescribed_positions`
+  /// (n×3, rows of other vertices ignored).
+  bool transfer_exact(const Positions& smooth_deformed, const Positions& prescribed_positions,
+                      Positions& result) const
+  {
+    if(!m_dirichlet_ready)
+      return false;
+    Eigen::MatrixXd y;
+    if(!m_dirichlet.solve(right_hand_side(smooth_deformed), prescribed_positions, y))
+      return false;
+    result = y;
+    return result.allFinite();
+  }
+
+  const Eigen::SparseMatrix<double>& stiffness() const { return m_stiffness; }
+
+private:
+  Eigen::Vector3d corner_edge(const Positions& x, Eigen::Index f, int corner, int shift) const
+  {
+    return (x.row(m_triangles(f, (corner + shift) % 3)) - x.row(m_triangles(f, corner))).transpose();
+  }
+
+  Eigen::Matrix3d frame(const Positions& x, Eigen::Index f) const
+  {
+    const Eigen::Vector3d e1 = corner_edge(x, f, 0, 1), e2 = corner_edge(x, f, 0, 2);
+    const Eigen::Vector3d n = e1.cross(e2);
+    Eigen::Matrix3d E;
+    E.col(0) = e1;
+    E.col(1) = e2;
+    E.col(2) = n / std::sqrt(n.norm());
+    return E;
+  }
+
+  Positions m_rest;
+  Triangles m_triangles;
+  Eigen::SparseMatrix<double> m_stiffness;
+  Eigen::Matrix<double, Eigen::Dynamic, 3> m_half_cotangents;
+  std::vector<Eigen::Matrix3d> m_inverse_frames;
+  std::vector<int> m_component;
+  int m_number_of_components = 0;
+  Dirichlet_system<SparseSPDSolverTraits> m_pinned;
+  Dirichlet_system<SparseSPDSolverTraits> m_dirichlet;
+  bool m_dirichlet_ready = false;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_INTERNAL_DETAIL_TRANSFER_H

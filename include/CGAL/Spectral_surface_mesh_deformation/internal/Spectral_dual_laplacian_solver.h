@@ -1,0 +1,149 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_INTERNAL_SPECTRAL_DUAL_LAPLACIAN_SOLVER_H
+#define CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_INTERNAL_SPECTRAL_DUAL_LAPLACIAN_SOLVER_H
+
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Dual_mesh_operator.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Iteration_report.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// Dual Laplacian editing in the space of a manifold harmonics basis (the
+/// paper, eq. 6-7): positions S = H Ṽ, least squares of
+/// [L̂F H; w H_c] Ṽ = [l̂; w c] with the normal matrix
+/// Ã = G₀ + w² H_cᵀ H_c, G₀ = Hᵀ (L̂F)ᵀ L̂F H precomputed per mesh. Weights and
+/// signed heights of the dual coordinates are those of the smooth rest mesh
+/// S₀ = H Hᵀ M V, so that the residual at rest is zero.
+class Spectral_dual_laplacian_solver
+{
+public:
+  typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Positions;
+
+  /// `basis` n×m M-orthonormal, `mass` its lumped mass, `positions` the rest
+  /// positions (n×3), `triangles` the faces.
+  void initialize(const Eigen::MatrixXd& basis, const Eigen::VectorXd& mass,
+                  const Triangle_arrays& rest)
+  {
+    m_basis = &basis;
+    m_mass = mass;
+    m_dual = Dual_mesh_operator(rest.triangles, rest.number_of_vertices());
+    m_rest_coefficients = basis.transpose() * (mass.asDiagonal() * rest.positions);
+    m_smooth_rest = basis * m_rest_coefficients;
+    m_rest_coordinates = m_dual.evaluate(m_smooth_rest);
+    const Eigen::SparseMatrix<double> LF = m_dual.laplacian_operator(m_rest_coordinates.weights);
+    m_LF_transpose = LF.transpose();
+    const Eigen::SparseMatrix<double> normal = m_LF_transpose * LF;
+    // Never form the dense rows×m matrix L̂F H: (LᵀL) H is n×m like H.
+    m_G0 = basis.transpose() * (normal * basis);
+    m_G0 = 0.5 * (m_G0 + m_G0.transpose()).eval();
+    m_scale = std::sqrt(mass.sum()) *
+              (rest.positions.colwise().maxCoeff() - rest.positions.colwise().minCoeff()).norm();
+    m_factored = false;
+  }
+
+  const Positions& smooth_rest() const { return m_smooth_rest; }
+  const Eigen::MatrixXd& rest_coefficients() const { return m_rest_coefficients; }
+  const Dual_mesh_operator& dual_mesh() const { return m_dual; }
+
+  /// Factors Ã for the constrained vertices. Returns false when Ã is not
+  /// positive definite.
+  bool preprocess(const std::vector<int>& constrained, double weight)
+  {
+    const Eigen::MatrixXd& H = *m_basis;
+    m_constrained = constrained;
+    m_weight = weight;
+    m_constrained_rows.resize(static_cast<Eigen::Index>(constrained.size()), H.cols());
+    for(std::size_t k = 0; k < constrained.size(); ++k)
+      m_constrained_rows.row(static_cast<Eigen::Index>(k)) = H.row(constrained[k]);
+    Eigen::MatrixXd A = m_G0;
+    A.selfadjointView<Eigen::Lower>().rankUpdate(m_constrained_rows.transpose(), weight * weight);
+    A.triangularView<Eigen::StrictlyUpper>() = A.transpose();
+    m_cholesky.compute(A);
+    m_factored = (m_cholesky.info() == Eigen::Success);
+    return m_factored;
+  }
+
+  /// Iterates from the coefficients `coefficients` (m×3, in/out) towards the
+  /// smooth targets (k×3) of the constrained vertices: at most
+  /// 1 + max_iterations solves, each with the rest coordinates turned to the
+  /// dual normals of the current smooth shape. Stops when the M-norm of the
+  /// step, relative to √area × bounding-box diagonal, is below `tolerance`.
+  /// On failure `coefficients` is left untouched.
+  Iteration_report solve(const Positions& smooth_targets, Eigen::MatrixXd& coefficients,
+                         int max_iterations, double tolerance) const
+  {
+    Iteration_report report;
+    if(!m_factored)
+      return report.failed("the spectral solver is not preprocessed");
+    const Eigen::MatrixXd& H = *m_basis;
+    const Eigen::MatrixXd constraint_rhs =
+        m_weight * m_weight * (m_constrained_rows.transpose() * smooth_targets);
+    Eigen::MatrixXd current = coefficients;
+    Positions shape = H * current;
+    Positions previous_normals = m_rest_coordinates.normals;
+    for(int iteration = 0; iteration <= max_iterations; ++iteration)
+    {
+      const Dual_coordinates now = m_dual.evaluate(shape, &previous_normals);
+      const Positions coordinates = (-m_rest_coordinates.heights).asDiagonal() * now.normals;
+      previous_normals = now.normals;
+      const Eigen::MatrixXd rhs =
+          H.transpose() * (m_LF_transpose * coordinates) + constraint_rhs;
+      const Eigen::MatrixXd next = m_cholesky.solve(rhs);
+      if(!next.allFinite())
+        return report.failed("the iteration produced non-finite values");
+      const double step = (next - current).norm() / m_scale;
+      current = next;
+      report.iterations = iteration;
+      report.last_step = step;
+      if(iteration > 2 && step > 0.5)
+        return report.failed("the iteration diverges");
+      if(step < tolerance)
+      {
+        report.converged = true;
+        break;
+      }
+      if(iteration < max_iterations)
+        shape = H * current;
+    }
+    coefficients = current;
+    return report;
+  }
+
+private:
+  const Eigen::MatrixXd* m_basis = nullptr;
+  Eigen::VectorXd m_mass;
+  Dual_mesh_operator m_dual;
+  Eigen::MatrixXd m_rest_coefficients;
+  Positions m_smooth_rest;
+  Dual_coordinates m_rest_coordinates;
+  Eigen::SparseMatrix<double> m_LF_transpose;
+  Eigen::MatrixXd m_G0;
+  double m_scale = 1;
+
+  std::vector<int> m_constrained;
+  Eigen::MatrixXd m_constrained_rows;
+  double m_weight = 1;
+  Eigen::LLT<Eigen::MatrixXd> m_cholesky;
+  bool m_factored = false;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_INTERNAL_SPECTRAL_DUAL_LAPLACIAN_SOLVER_H

@@ -1,0 +1,501 @@
+#include "test_meshes.h"
+
+#include <CGAL/Spectral_surface_mesh_deformation.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/arap_energy.h>
+#include <CGAL/Surface_mesh_deformation.h>
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+using namespace test_meshes;
+namespace internal = CGAL::Spectral_deformation::internal;
+typedef boost::graph_traits<Surface_mesh>::vertex_descriptor SM_vertex;
+typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh> Spectral;
+typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh, CGAL::Default, CGAL::Default,
+                                                CGAL::SPECTRAL_LINEAR>
+    Linear;
+typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh, CGAL::Default, CGAL::Default,
+                                                CGAL::SPATIAL_DUAL_LAPLACIAN>
+    Spatial;
+
+namespace {
+
+const double pi = 3.14159265358979323846;
+
+template <class Mesh>
+Eigen::MatrixXd positions_of(const Mesh& mesh)
+{
+  auto index = CGAL::get_initialized_vertex_index_map(mesh);
+  Eigen::MatrixXd x(num_vertices(mesh), 3);
+  for(auto v : vertices(mesh))
+  {
+    const auto& p = get(CGAL::vertex_point, mesh, v);
+    x.row(get(index, v)) << p.x(), p.y(), p.z();
+  }
+  return x;
+}
+
+template <class Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex_list(const Mesh& mesh)
+{
+  return std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>(vertices(mesh).begin(),
+                                                                            vertices(mesh).end());
+}
+
+// The ends of the cylinder of test_meshes::bar: z below `low`, above `high`.
+template <class Mesh>
+void select_ends(const Mesh& mesh, double low, double high,
+                 std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& bottom,
+                 std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& top)
+{
+  for(auto v : vertices(mesh))
+  {
+    const double z = get(CGAL::vertex_point, mesh, v).z();
+    if(z < low)
+      bottom.push_back(v);
+    else if(z > high)
+      top.push_back(v);
+  }
+}
+
+// Exercises every public member of CGAL's Surface_mesh_deformation API: the
+// same code must compile and run for both classes.
+template <class Deformation, class Mesh>
+void exercise_cgal_api(Mesh& mesh)
+{
+  typedef typename Deformation::vertex_descriptor vertex_descriptor;
+  typedef typename Deformation::Point Point;
+  Deformation deformation(mesh);
+  std::vector<vertex_descriptor> all = vertex_list(mesh), bottom, top;
+  select_ends(mesh, 0.3, 4.7, bottom, top);
+
+  deformation.insert_roi_vertices(all.begin(), all.end());
+  CHECK(deformation.roi_vertices().size() == all.size());
+  CHECK_FALSE(deformation.insert_roi_vertex(all.front()));
+  CHECK(deformation.erase_roi_vertex(all.front()));
+  CHECK(deformation.insert_roi_vertex(all.front()));
+  deformation.insert_control_vertices(bottom.begin(), bottom.end());
+  deformation.insert_control_vertices(top.begin(), top.end());
+  CHECK(deformation.is_control_vertex(top.front()));
+  CHECK(deformation.erase_control_vertex(top.front()));
+  CHECK_FALSE(deformation.is_control_vertex(top.front()));
+  CHECK(deformation.insert_control_vertex(top.front()));
+  CHECK(deformation.is_roi_vertex(top.front()));
+  CHECK(deformation.preprocess());
+
+  deformation.set_iterations(8);
+  deformation.set_tolerance(1e-6);
+  CHECK(deformation.iterations() == 8);
+  CHECK(deformation.tolerance() == 1e-6);
+
+  const Eigen::Quaternion<double> quarter(Eigen::AngleAxisd(pi / 4, Eigen::Vector3d::UnitX()));
+  deformation.rotate(top.begin(), top.end(), Eigen::Vector3d(0, 0, 4.7), quarter);
+  deformation.rotate(top.front(), Eigen::Vector3d(0, 0, 4.7), Eigen::Quaternion<double>::Identity());
+  deformation.translate(top.begin(), top.end(), Eigen::Vector3d(0.5, 0, 0));
+  deformation.translate(top.front(), Eigen::Vector3d(0, 0, 0));
+  const Point target = deformation.target_position(top.front());
+  deformation.set_target_position(top.front(), target);
+  deformation.deform();
+  deformation.deform(3, 0.0);
+  const Point moved = get(CGAL::vertex_point, mesh, top.front());
+  CHECK(CGAL::squared_distance(moved, target) < 0.25); // near its target
+
+  deformation.overwrite_initial_geometry();
+  deformation.reset();
+  CHECK(get(CGAL::vertex_point, mesh, top.front()) == moved);
+  deformation.clear_control_vertices();
+  CHECK_FALSE(deformation.is_control_vertex(bottom.front()));
+  deformation.clear_roi_vertices();
+  CHECK(deformation.roi_vertices().empty());
+  CHECK(&deformation.triangle_mesh() == &mesh);
+}
+
+Eigen::RowVector3d row(const Point& p) { return Eigen::RowVector3d(p.x(), p.y(), p.z()); }
+
+struct Run
+{
+  Eigen::MatrixXd before, after;
+  CGAL::Spectral_deformation_report report;
+  CGAL::Spectral_preprocess_report preprocess;
+  std::vector<std::size_t> controls; // vertex indices
+};
+
+// Deforms a copy of `soup` with the ends of the cylinder as control vertices
+// and the whole mesh as ROI: the bottom end moved by `bottom_motion`, the top
+// end by `top_motion`.
+template <class Deformation, class Mesh = Surface_mesh>
+Run deform_bar(const Soup& soup, const internal::Rigid_motion& bottom_motion,
+               const internal::Rigid_motion& top_motion, unsigned int iterations, double tolerance,
+               std::size_t m = 100, CGAL::Spectral_constraint_policy policy = CGAL::EXACT_CONSTRAINTS)
+{
+  Mesh mesh = to_mesh<Mesh>(soup);
+  Run run;
+  run.before = positions_of(mesh);
+  Deformation deformation(mesh);
+  auto all = vertex_list(mesh);
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> bottom, top;
+  select_ends(mesh, 0.3, 4.7, bottom, top);
+  deformation.insert_roi_vertices(all.begin(), all.end());
+  deformation.insert_control_vertices(bottom.begin(), bottom.end());
+  deformation.insert_control_vertices(top.begin(), top.end());
+  deformation.set_number_of_frequencies(m);
+  deformation.set_constraint_policy(policy);
+  REQUIRE(deformation.preprocess());
+  auto index = CGAL::get_initialized_vertex_index_map(mesh);
+  for(auto v : bottom)
+  {
+    const Eigen::RowVector3d p = bottom_motion.apply(run.before.row(get(index, v)));
+    deformation.set_target_position(v, Point(p[0], p[1], p[2]));
+    run.controls.push_back(get(index, v));
+  }
+  for(auto v : top)
+  {
+    const Eigen::RowVector3d p = top_motion.apply(run.before.row(get(index, v)));
+    deformation.set_target_position(v, Point(p[0], p[1], p[2]));
+    run.controls.push_back(get(index, v));
+  }
+  deformation.deform(iterations, tolerance);
+  run.report = deformation.deform_report();
+  run.preprocess = deformation.preprocess_report();
+  INFO(run.report.message);
+  REQUIRE(run.report.success);
+  run.after = positions_of(mesh);
+  return run;
+}
+
+internal::Rigid_motion motion(double angle, const Eigen::Vector3d& axis,
+                              const Eigen::Vector3d& center = Eigen::Vector3d::Zero(),
+                              const Eigen::Vector3d& shift = Eigen::Vector3d::Zero())
+{
+  internal::Rigid_motion result;
+  result.rotation = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+  result.translation = center - result.rotation * center + shift;
+  return result;
+}
+
+Eigen::MatrixXd moved_rigidly(const Eigen::MatrixXd& x, const internal::Rigid_motion& m)
+{
+  return ((x * m.rotation.transpose()).rowwise() + m.translation.transpose()).eval();
+}
+
+double diagonal_of(const Eigen::MatrixXd& x)
+{
+  return (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
+}
+
+internal::Triangle_arrays arrays_of(const Soup& soup)
+{
+  return internal::extract_triangle_arrays(to_mesh<Surface_mesh>(soup),
+                                           CGAL::parameters::default_values());
+}
+
+} // namespace
+
+TEST_CASE("API parity with CGAL::Surface_mesh_deformation", "[deformation][api]")
+{
+  const Soup soup = bar(16, 3);
+  SECTION("CGAL ARAP")
+  {
+    Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+    exercise_cgal_api<CGAL::Surface_mesh_deformation<Surface_mesh>>(mesh);
+  }
+  SECTION("spectral")
+  {
+    Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+    exercise_cgal_api<Spectral>(mesh);
+  }
+  SECTION("spectral on Polyhedron_3")
+  {
+    Polyhedron mesh = to_mesh<Polyhedron>(soup);
+    exercise_cgal_api<CGAL::Spectral_surface_mesh_deformation<Polyhedron>>(mesh);
+  }
+  SECTION("spatial")
+  {
+    Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+    exercise_cgal_api<Spatial>(mesh);
+  }
+}
+
+TEST_CASE("a rigid motion of all constraints moves the mesh rigidly", "[deformation]")
+{
+  const Soup soup = bar(16, 3);
+  const internal::Rigid_motion rigid = motion(1.0, Eigen::Vector3d(1, 2, 0.5), Eigen::Vector3d(0, 0, 2.5),
+                                              Eigen::Vector3d(0.3, -1, 2));
+  SECTION("spectral, exact and soft policies")
+  {
+    for(auto policy : {CGAL::EXACT_CONSTRAINTS, CGAL::SOFT_CONSTRAINTS})
+    {
+      const Run run = deform_bar<Spectral>(soup, rigid, rigid, 2000, 1e-13, 60, policy);
+      const Eigen::MatrixXd expected = moved_rigidly(run.before, rigid);
+      INFO("policy " << policy << ", iterations " << run.report.iterations);
+      CHECK((run.after - expected).cwiseAbs().maxCoeff() < 1e-8 * diagonal_of(run.before));
+    }
+  }
+  SECTION("spatial")
+  {
+    const Run run = deform_bar<Spatial>(soup, rigid, rigid, 2000, 1e-13);
+    const Eigen::MatrixXd expected = moved_rigidly(run.before, rigid);
+    CHECK((run.after - expected).cwiseAbs().maxCoeff() < 1e-8 * diagonal_of(run.before));
+  }
+  SECTION("linear: translations are reproduced, rotations are not (the reason to iterate)")
+  {
+    const internal::Rigid_motion shift = motion(0.0, Eigen::Vector3d::UnitX(), Eigen::Vector3d::Zero(),
+                                                Eigen::Vector3d(0.3, -1, 2));
+    const Run run = deform_bar<Linear>(soup, shift, shift, 10, 0.0, 60);
+    CHECK((run.after - moved_rigidly(run.before, shift)).cwiseAbs().maxCoeff() <
+          1e-10 * diagonal_of(run.before));
+    CHECK(run.report.iterations == 1);
+    const Run turned = deform_bar<Linear>(soup, rigid, rigid, 10, 0.0, 60);
+    CHECK((turned.after - moved_rigidly(turned.before, rigid)).cwiseAbs().maxCoeff() >
+          1e-3 * diagonal_of(turned.before));
+  }
+}
+
+TEST_CASE("exact policy: controls on target, outside the ROI untouched; soft policy reports residuals",
+          "[deformation]")
+{
+  Surface_mesh mesh = to_mesh<Surface_mesh>(bar(24, 3));
+  const Eigen::MatrixXd before = positions_of(mesh);
+  std::vector<SM_vertex> bottom, top, roi;
+  select_ends(mesh, 1.0, 3.9, bottom, top);
+  for(auto v : mesh.vertices())
+    if(mesh.point(v).z() > 1.0)
+      roi.push_back(v); // the lower part is outside the ROI
+  std::vector<SM_vertex> handle;
+  for(auto v : top)
+    if(mesh.point(v).z() > 4.7)
+      handle.push_back(v);
+  for(auto policy : {CGAL::EXACT_CONSTRAINTS, CGAL::SOFT_CONSTRAINTS})
+  {
+    Spectral deformation(mesh);
+    deformation.insert_roi_vertices(roi.begin(), roi.end());
+    deformation.insert_control_vertices(handle.begin(), handle.end());
+    deformation.set_number_of_frequencies(80);
+    deformation.set_constraint_policy(policy);
+    const Eigen::Quaternion<double> q(Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()));
+    deformation.rotate(handle.begin(), handle.end(), Eigen::Vector3d(0, 0, 3.0), q);
+    deformation.deform();
+    const CGAL::Spectral_deformation_report& report = deformation.deform_report();
+    INFO(report.message);
+    REQUIRE(report.success);
+    const Eigen::MatrixXd after = positions_of(mesh);
+    for(auto v : mesh.vertices())
+      if(!deformation.is_roi_vertex(v))
+        CHECK(after.row(v.idx()) == before.row(v.idx())); // bit-identical
+    double worst = 0;
+    for(auto v : handle)
+      worst = std::max(worst, (after.row(v.idx()) - row(deformation.target_position(v))).norm());
+    INFO("policy " << policy << ": max residual " << worst << ", reported "
+                   << report.max_control_residual);
+    CHECK(report.max_control_residual * 1.0 >= 0.0);
+    if(policy == CGAL::EXACT_CONSTRAINTS)
+      CHECK(worst == 0.0);
+    else
+    {
+      CHECK(worst > 0.0);
+      CHECK(report.max_control_residual < 2e-2);
+    }
+    deformation.reset();
+    CHECK(positions_of(mesh) == before);
+  }
+}
+
+TEST_CASE("iteration lowers the ARAP energy of a twist; the spectral result approaches the spatial one",
+          "[deformation]")
+{
+  const Soup soup = bar(24, 3);
+  const internal::Triangle_arrays rest = arrays_of(soup);
+  const internal::Rigid_motion still;
+  const internal::Rigid_motion twist = motion(2 * pi / 3, Eigen::Vector3d::UnitZ());
+
+  const Run linear = deform_bar<Linear>(soup, still, twist, 1, 0.0, 100);
+  const Run iterated = deform_bar<Spectral>(soup, still, twist, 50, 1e-6, 100);
+  const double e_linear = internal::arap_energy(rest, linear.after);
+  const double e_iterated = internal::arap_energy(rest, iterated.after);
+  INFO("ARAP energy: linear " << e_linear << ", iterated " << e_iterated);
+  CHECK(e_iterated < 0.5 * e_linear);
+
+  // Bend (the spectral and spatial solvers agree better and better as m grows).
+  const internal::Rigid_motion bend = motion(pi / 4, Eigen::Vector3d::UnitX(), Eigen::Vector3d(0, 0, 5.0));
+  const Run spatial = deform_bar<Spatial>(soup, still, bend, 200, 1e-10);
+  double previous = std::numeric_limits<double>::infinity();
+  for(std::size_t m : {10, 40, 160})
+  {
+    const Run spectral = deform_bar<Spectral>(soup, still, bend, 200, 1e-10, m);
+    const double distance =
+        (spectral.after - spatial.after).rowwise().norm().maxCoeff() / diagonal_of(spectral.before);
+    INFO("m = " << m << ": largest distance to the spatial result " << distance);
+    CHECK(distance < previous);
+    previous = distance;
+  }
+  CHECK(previous < 0.05);
+}
+
+TEST_CASE("reset, continued iteration and overwrite_initial_geometry", "[deformation]")
+{
+  Surface_mesh mesh = to_mesh<Surface_mesh>(bar(16, 3));
+  const Eigen::MatrixXd before = positions_of(mesh);
+  std::vector<SM_vertex> bottom, top;
+  select_ends(mesh, 0.3, 4.7, bottom, top);
+  Spectral deformation(mesh);
+  auto all = vertex_list(mesh);
+  deformation.insert_roi_vertices(all.begin(), all.end());
+  deformation.insert_control_vertices(bottom.begin(), bottom.end());
+  deformation.insert_control_vertices(top.begin(), top.end());
+  deformation.set_number_of_frequencies(60);
+  deformation.translate(top.begin(), top.end(), Eigen::Vector3d(1.0, 0, 0));
+  deformation.deform(2, 0.0);
+  CHECK(deformation.preprocess_report().basis_computed);
+  const double first_step = deformation.deform_report().last_step;
+  deformation.deform(2, 0.0);
+  CHECK(deformation.deform_report().last_step < first_step); // it went on
+  CHECK_FALSE(deformation.preprocess_report().basis_computed);
+
+  deformation.reset();
+  CHECK(positions_of(mesh) == before);
+  CHECK(row(deformation.target_position(top.front())) == before.row(top.front().idx()));
+  deformation.deform();
+  CHECK((positions_of(mesh) - before).cwiseAbs().maxCoeff() < 1e-9); // targets were reset too
+  CHECK_FALSE(deformation.preprocess_report().region_rebuilt);         // no new basis
+
+  deformation.translate(top.begin(), top.end(), Eigen::Vector3d(0.0, 0.7, 0));
+  deformation.deform();
+  const Eigen::MatrixXd deformed = positions_of(mesh);
+  deformation.overwrite_initial_geometry();
+  deformation.deform();
+  CHECK(deformation.preprocess_report().region_rebuilt);
+  // The deformed shape is the new rest shape and the targets are met: nothing moves.
+  CHECK((positions_of(mesh) - deformed).cwiseAbs().maxCoeff() < 1e-8);
+  deformation.reset();
+  CHECK(positions_of(mesh) == deformed);
+}
+
+TEST_CASE("Surface_mesh and Polyhedron_3 give the same deformation", "[deformation]")
+{
+  const Soup soup = bar(12, 2);
+  const internal::Rigid_motion still;
+  const internal::Rigid_motion bend = motion(pi / 3, Eigen::Vector3d::UnitY(), Eigen::Vector3d(0, 0, 5.0));
+  const Run a = deform_bar<Spectral>(soup, still, bend, 10, 0.0, 40);
+  const Run b = deform_bar<CGAL::Spectral_surface_mesh_deformation<Polyhedron>, Polyhedron>(
+      soup, still, bend, 10, 0.0, 40);
+  CHECK((a.after - b.after).cwiseAbs().maxCoeff() == 0.0);
+}
+
+TEST_CASE("basis cache: saved, loaded, handed in, refused when stale", "[deformation][io]")
+{
+  const Soup soup = bar(12, 2);
+  Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  auto all = vertex_list(mesh);
+  std::string bytes;
+  {
+    Spectral deformation(mesh);
+    deformation.insert_roi_vertices(all.begin(), all.end());
+    deformation.insert_control_vertex(all.front());
+    deformation.set_number_of_frequencies(30);
+    REQUIRE(deformation.preprocess());
+    CHECK(deformation.preprocess_report().basis_computed);
+    std::ostringstream out;
+    deformation.save_basis(out);
+    bytes = out.str();
+  }
+  {
+    Spectral deformation(mesh);
+    deformation.insert_roi_vertices(all.begin(), all.end());
+    deformation.insert_control_vertex(all.front());
+    std::istringstream in(bytes);
+    deformation.load_basis(in);
+    REQUIRE(deformation.preprocess());
+    CHECK_FALSE(deformation.preprocess_report().basis_computed);
+    CHECK(deformation.preprocess_report().number_of_frequencies == 30);
+  }
+  {
+    Spectral deformation(mesh);
+    deformation.insert_roi_vertices(all.begin(), all.end());
+    deformation.insert_control_vertex(all.front());
+    deformation.set_basis(CGAL::Manifold_harmonics_basis<Surface_mesh>(mesh, 25));
+    REQUIRE(deformation.preprocess());
+    CHECK_FALSE(deformation.preprocess_report().basis_computed);
+    CHECK(deformation.preprocess_report().number_of_frequencies == 25);
+  }
+  {
+    // A region that is not the whole mesh: the cached basis does not fit.
+    Spectral deformation(mesh);
+    deformation.insert_roi_vertices(all.begin(), all.begin() + 40);
+    deformation.insert_control_vertex(all.front());
+    std::istringstream in(bytes);
+    CHECK_THROWS_AS(deformation.load_basis(in), CGAL::Spectral_deformation_error);
+    std::string corrupted = bytes;
+    corrupted[corrupted.size() / 2] ^= 0x20;
+    std::istringstream bad(corrupted);
+    CHECK_THROWS_AS(deformation.load_basis(bad), CGAL::Spectral_deformation_error);
+    CHECK(deformation.preprocess());
+    CHECK(deformation.preprocess_report().basis_computed);
+  }
+}
+
+TEST_CASE("clear failures leave the mesh untouched", "[deformation][errors]")
+{
+  Surface_mesh mesh = to_mesh<Surface_mesh>(bar(10, 2));
+  const Eigen::MatrixXd before = positions_of(mesh);
+  auto all = vertex_list(mesh);
+  SECTION("empty ROI")
+  {
+    Spectral deformation(mesh);
+    CHECK_FALSE(deformation.preprocess());
+    CHECK(deformation.preprocess_report().message.find("empty") != std::string::npos);
+    deformation.deform();
+    CHECK_FALSE(deformation.deform_report().success);
+    CHECK_FALSE(deformation.deform_report().message.empty());
+  }
+  SECTION("whole mesh without a control vertex")
+  {
+    Spectral deformation(mesh);
+    deformation.insert_roi_vertices(all.begin(), all.end());
+    CHECK_FALSE(deformation.preprocess());
+    CHECK(deformation.preprocess_report().message.find("constraint") != std::string::npos);
+  }
+  SECTION("non-finite target")
+  {
+    Spectral deformation(mesh);
+    deformation.insert_roi_vertices(all.begin(), all.end());
+    deformation.insert_control_vertex(all.front());
+    const Point before_target = deformation.target_position(all.front());
+    CHECK_THROWS_AS(deformation.set_target_position(all.front(), Point(std::nan(""), 0, 0)),
+                    CGAL::Spectral_deformation_error);
+    CHECK_THROWS_AS(deformation.translate(all.front(), Eigen::Vector3d(INFINITY, 0, 0)),
+                    CGAL::Spectral_deformation_error);
+    CHECK(deformation.target_position(all.front()) == before_target);
+  }
+  SECTION("degenerate face in the region")
+  {
+    Surface_mesh broken = mesh;
+    const auto f = *broken.faces().begin();
+    auto h = broken.halfedge(f);
+    broken.point(broken.target(h)) = broken.point(broken.source(h));
+    const Eigen::MatrixXd broken_before = positions_of(broken);
+    Spectral deformation(broken);
+    auto vs = vertex_list(broken);
+    deformation.insert_roi_vertices(vs.begin(), vs.end());
+    deformation.insert_control_vertex(vs.back());
+    CHECK_FALSE(deformation.preprocess());
+    CHECK(deformation.preprocess_report().message.find("degenerate") != std::string::npos);
+    deformation.deform();
+    CHECK(positions_of(broken) == broken_before);
+  }
+  SECTION("a component without constraint")
+  {
+    Surface_mesh spheres = to_mesh<Surface_mesh>(two_spheres(1));
+    Spectral deformation(spheres);
+    auto vs = vertex_list(spheres);
+    deformation.insert_roi_vertices(vs.begin(), vs.end());
+    deformation.insert_control_vertex(vs.front());
+    CHECK_FALSE(deformation.preprocess());
+    CHECK(deformation.preprocess_report().message.find("connected") != std::string::npos);
+  }
+  CHECK(positions_of(mesh) == before);
+}
