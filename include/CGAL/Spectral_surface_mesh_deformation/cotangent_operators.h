@@ -9,6 +9,7 @@
 
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
 
+#include <Eigen/Geometry>
 #include <Eigen/Sparse>
 
 #include <vector>

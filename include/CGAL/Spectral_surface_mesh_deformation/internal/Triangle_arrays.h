@@ -15,6 +15,7 @@
 #include <CGAL/Named_function_parameters.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <cstdint>
