@@ -1,7 +1,9 @@
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
+#include <CGAL/Spectral_surface_mesh_deformation/IO/deformation_selection.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/arap_energy.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh_deformation.h>
 
 #include <catch2/catch.hpp>
@@ -498,4 +500,53 @@ TEST_CASE("clear failures leave the mesh untouched", "[deformation][errors]")
     CHECK(deformation.preprocess_report().message.find("connected") != std::string::npos);
   }
   CHECK(positions_of(mesh) == before);
+}
+
+TEST_CASE("Botsch-Sorkine cactus: residuals of both policies", "[deformation][botsch08]")
+{
+  const std::string dir = SSMD_BOTSCH08_DIR;
+  Surface_mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(dir + "/cactus.off", mesh))
+  {
+    WARN("the Botsch-Sorkine benchmark is not available in " << dir << ": case skipped");
+    return;
+  }
+  const auto status = CGAL::IO::read_selection(dir + "/cactus.sel", mesh.number_of_vertices());
+  const Eigen::Matrix4d handle = CGAL::IO::read_handle_transformation(dir + "/cactus.def");
+  const Eigen::MatrixXd before = positions_of(mesh);
+  for(auto policy : {CGAL::EXACT_CONSTRAINTS, CGAL::SOFT_CONSTRAINTS})
+  {
+    Surface_mesh copy = mesh;
+    Spectral deformation(copy);
+    for(auto v : copy.vertices())
+      if(status[v.idx()] != CGAL::IO::FIXED_VERTEX)
+        deformation.insert_roi_vertex(v);
+    for(auto v : copy.vertices())
+      if(status[v.idx()] == CGAL::IO::HANDLE_VERTEX)
+      {
+        deformation.insert_control_vertex(v);
+        const Eigen::Vector4d q = handle * Eigen::Vector4d(before(v.idx(), 0), before(v.idx(), 1),
+                                                           before(v.idx(), 2), 1.0);
+        deformation.set_target_position(v, Point(q[0], q[1], q[2]));
+      }
+    deformation.set_constraint_policy(policy);
+    deformation.deform();
+    const CGAL::Spectral_deformation_report& report = deformation.deform_report();
+    INFO(report.message);
+    REQUIRE(report.success);
+    INFO("policy " << policy << ": largest residual " << report.max_control_residual);
+    if(policy == CGAL::EXACT_CONSTRAINTS)
+      CHECK(report.max_control_residual == 0.0);
+    else
+    {
+      CHECK(report.max_control_residual > 0.0);
+      CHECK(report.max_control_residual < 2e-3);
+    }
+    const Eigen::MatrixXd after = positions_of(copy);
+    for(auto v : copy.vertices())
+      if(status[v.idx()] == CGAL::IO::FIXED_VERTEX)
+        CHECK(after.row(v.idx()) == before.row(v.idx()));
+    CHECK(internal::arap_energy(internal::extract_triangle_arrays(mesh, CGAL::parameters::default_values()),
+                                after) < 0.05);
+  }
 }
