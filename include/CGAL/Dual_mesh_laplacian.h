@@ -19,7 +19,7 @@
 namespace CGAL {
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationRef
-/// The dual mesh of a triangle mesh and its dual Laplacian (Au et al. 2006).
+/// The dual mesh of a triangle mesh and its dual Laplacian (Au et al.\ 2006).
 ///
 /// The dual vertex of a face is its centroid; the dual neighbours of a face
 /// `(a, b, c)` are the faces across its edges `ab`, `bc` and `ca`, in that
@@ -32,7 +32,8 @@ namespace CGAL {
 ///
 /// Only faces with three dual neighbours get a coordinate (a *row*); faces
 /// along a border have none. A row whose neighbour triangle is degenerate
-/// gets uniform weights and keeps a previous normal when one is given.
+/// (its area is negligible against its longest edge) gets uniform weights
+/// and keeps a previous normal when one is given (see `evaluate()`).
 ///
 /// Weights, normals, heights and coordinates can be evaluated at any vertex
 /// positions (the original mesh, a smoothed or a deformed one) without
@@ -52,7 +53,13 @@ public:
   typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Positions;
   /// Per-row barycentric weights, `rows × 3`.
   typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Weights;
-  /// Weights, normals, heights and coordinates at some positions.
+  /// Weights, normals, heights and coordinates at some positions, one row
+  /// per row of the dual mesh. Its public members are `weights` (`rows × 3`,
+  /// the barycentric weights of the neighbours across `ab`, `bc`, `ca`),
+  /// `normals` (`rows × 3`, the unit normals of the neighbour planes, oriented
+  /// like the face), `heights` (a vector of `rows` signed heights `h`),
+  /// `coordinates` (`rows × 3`, `l̂ = -h n̂`) and `degenerate_rows` (the
+  /// number of rows whose neighbour triangle was degenerate).
   typedef Spectral_deformation::internal::Dual_coordinates Coordinates;
   /// Face descriptor of the mesh.
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
@@ -65,9 +72,11 @@ public:
   /// \param np optional named parameters among `vertex_point_map` (default
   ///        `get(CGAL::vertex_point, tm)`) and `vertex_index_map` (default: an
   ///        initialized vertex index map of `tm`)
-  /// \throws Spectral_deformation_error (`INVALID_MESH`) for a mesh that is not
-  ///         triangulated, has degenerate faces, isolated vertices, non-finite
-  ///         coordinates, or edges shared by more than two faces.
+  /// \throws Spectral_deformation_error (`INVALID_MESH`) for a mesh that is
+  ///         empty or not triangulated, has degenerate faces, isolated
+  ///         vertices, non-finite coordinates, edges shared by more than two
+  ///         faces or inconsistently oriented faces, or a vertex index map
+  ///         that is not a bijection onto `[0, num_vertices(tm))`.
   template <class NamedParameters = parameters::Default_named_parameters>
   explicit Dual_mesh_laplacian(const TriangleMesh& tm,
                                const NamedParameters& np = parameters::default_values())
@@ -112,8 +121,11 @@ public:
   /// The coordinates at the positions of the mesh at construction.
   const Coordinates& rest_coordinates() const { return m_rest; }
   /// Weights, unit normals, signed heights and coordinates at `positions`
-  /// (`n × 3`). A row with a degenerate neighbour triangle keeps the normal of
-  /// the same row in `previous_normals` when it is given.
+  /// (`n × 3`). A row with a degenerate neighbour triangle gets the weights
+  /// 1/3 and keeps the normal of the same row in `previous_normals`
+  /// (`rows × 3`) when it is given, for instance the normals of the previous
+  /// iteration; otherwise its normal points from the centroid of its
+  /// neighbours to its dual vertex.
   Coordinates evaluate(const Positions& positions, const Positions* previous_normals = nullptr) const
   {
     return m_operator.evaluate(positions, previous_normals);
@@ -121,8 +133,11 @@ public:
 
   /// The centroid operator `F` (`f × n`, entries 1/3).
   Eigen::SparseMatrix<double> centroid_operator() const { return m_operator.centroid_operator(); }
-  /// The operator `L̂F` (`rows × n`) for the given weights: `L̂F X` are the dual
-  /// Laplacian coordinates of positions `X` measured with these weights.
+  /// The operator `L̂F` (`rows × n`) for the given weights (`rows × 3`):
+  /// `L̂F X` are the dual Laplacian coordinates of positions `X` measured with
+  /// these weights. Row `r` has the entry -1/3 at the vertices of its face
+  /// and `w_j/3` at the vertices of its neighbour `j`, summed at the vertices
+  /// they share.
   Eigen::SparseMatrix<double> laplacian_operator(const Weights& weights) const
   {
     return m_operator.laplacian_operator(weights);

@@ -37,38 +37,58 @@
 namespace CGAL {
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationRef
-/// The algorithms of `Spectral_surface_mesh_deformation`.
+/// The algorithms of `Spectral_surface_mesh_deformation`, its template
+/// parameter `TAG`.
 enum Spectral_deformation_algorithm_tag {
-  /// The paper's algorithm: dual Laplacian editing in the space of the first
-  /// `m` manifold harmonics, iterated so that the dual Laplacian coordinates
-  /// follow the local rotations, then detail transfer.
+  /// The paper's algorithm (the default): dual Laplacian editing in the space
+  /// of the first `m` manifold harmonics, iterated so that the dual Laplacian
+  /// coordinates follow the local rotations, then detail transfer.
   SPECTRAL_DUAL_LAPLACIAN,
-  /// The same reduced system solved once, without iteration (the linear
-  /// spectral solution the paper compares against; it cannot follow large
-  /// rotations).
+  /// The same reduced system solved once with the dual Laplacian coordinates
+  /// of the rest shape, then detail transfer: the linear spectral solution
+  /// the paper compares against, which cannot follow large rotations.
+  /// Every `deform()` starts again from the rest shape, and the number of
+  /// iterations is not used.
   SPECTRAL_LINEAR,
-  /// Dual Laplacian editing of Au et al. (2006) on the full mesh: an `n × n`
-  /// sparse system per constraint set, the paper's spatial baseline.
+  /// Dual Laplacian editing of Au et al.\ 2006 on the detailed region, the
+  /// paper's spatial baseline: a sparse system of the size of the region,
+  /// factored once per constraint set, with the constrained vertices
+  /// eliminated (they land exactly on their targets). There is no basis and
+  /// no detail transfer; the constraint weight and the constraint policy are
+  /// not used.
   SPATIAL_DUAL_LAPLACIAN
 };
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationRef
-/// How the constraints of `Spectral_surface_mesh_deformation` are met.
+/// How the spectral algorithms of `Spectral_surface_mesh_deformation` meet
+/// the constraints (`SPATIAL_DUAL_LAPLACIAN` always meets them exactly).
+///
+/// In both policies the reduced solve meets the constraints of the smooth
+/// mesh in the least-squares sense, and the vertices outside the region of
+/// interest are never moved; the policies differ in the detail transfer.
 enum Spectral_constraint_policy {
-  /// CGAL's semantics: control vertices land exactly on their targets and the
-  /// vertices around the region of interest do not move. The detail transfer
-  /// is a Poisson problem with these vertices prescribed, factored by
-  /// `preprocess()` once per constraint set.
+  /// CGAL's semantics (the default): control vertices land exactly on their
+  /// targets and the region of interest joins the fixed vertices around it.
+  /// The detail transfer is a Poisson problem in which the control vertices
+  /// and the fixed vertices are prescribed; `preprocess()` factors it once
+  /// per constraint set, a sparse factorization of the size of the region.
   EXACT_CONSTRAINTS,
-  /// The paper's formulation: constraints are soft in the reduced solve and
-  /// the detail transfer only fits a translation, so that a new constraint
-  /// set costs no factorization of size `n`; control vertices land near their
-  /// targets (residuals are reported).
+  /// The paper's formulation: the detail transfer only fits, per connected
+  /// part of the region, the translation that best matches the constrained
+  /// vertices, so that a new constraint set costs no sparse factorization at
+  /// all (only the `m × m` one). Control vertices land near their targets,
+  /// and the region of interest near the fixed vertices; the residuals are in
+  /// `Spectral_deformation_report`.
   SOFT_CONSTRAINTS
 };
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationRef
 /// What the last `preprocess()` of a `Spectral_surface_mesh_deformation` did.
+///
+/// When `preprocess()` finds nothing to do (neither the region nor the
+/// constraint set changed since its last success), the report is kept, with
+/// `region_rebuilt` and `basis_computed` set to `false` and the times to 0.
+/// Times are wall-clock seconds.
 struct Spectral_preprocess_report
 {
   bool success = false;                     ///< whether the deformation can run
@@ -76,15 +96,19 @@ struct Spectral_preprocess_report
   bool region_rebuilt = false;              ///< the region (and its basis) had to be built
   bool basis_computed = false;              ///< the eigensolver ran (not reused, handed in or loaded)
   std::size_t number_of_region_vertices = 0;///< vertices of the region of interest and their fixed ring
-  std::size_t number_of_frequencies = 0;    ///< basis functions in use (spectral algorithms)
+  std::size_t number_of_frequencies = 0;    ///< basis functions in use (spectral algorithms; 0 with `SPATIAL_DUAL_LAPLACIAN`)
   std::size_t number_of_constrained_vertices = 0; ///< control vertices and fixed ring vertices
-  double region_seconds = 0;                ///< region extraction, validation, basis, per-mesh matrices
+  double region_seconds = 0;                ///< region extraction, validation, basis, per-region matrices and factorizations
   double basis_seconds = 0;                 ///< of which the eigensolve
-  double factorization_seconds = 0;         ///< per constraint set: reduced (and exact-policy) factorizations
+  double factorization_seconds = 0;         ///< per constraint set: the reduced factorization, plus the sparse one of the exact policy or of `SPATIAL_DUAL_LAPLACIAN`
 };
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationRef
 /// What the last `deform()` of a `Spectral_surface_mesh_deformation` did.
+///
+/// The residuals are measured on the positions written to the mesh: they are
+/// 0 up to round-off with `EXACT_CONSTRAINTS` and with
+/// `SPATIAL_DUAL_LAPLACIAN`. Times are wall-clock seconds.
 struct Spectral_deformation_report
 {
   bool success = false;             ///< whether the mesh was updated
@@ -95,46 +119,61 @@ struct Spectral_deformation_report
   double max_control_residual = 0;  ///< largest distance of a control vertex to its target, relative to the bounding-box diagonal of the region
   double rms_control_residual = 0;  ///< root mean square of the same distances, relative likewise
   double solve_seconds = 0;         ///< rigid fits and iterations
-  double detail_transfer_seconds = 0; ///< deformation transfer (spectral algorithms)
+  double detail_transfer_seconds = 0; ///< deformation transfer (spectral algorithms; 0 with `SPATIAL_DUAL_LAPLACIAN`)
   double total_seconds = 0;         ///< the whole `deform()` call, preprocessing excluded
 };
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationRef
 /// Deforms a triangle mesh with the spectral dual Laplacian editing of
 /// *Spectral Surface Deformation with Dual Mesh*, behind the API of
-/// `CGAL::Surface_mesh_deformation`: a program written for CGAL's class
-/// compiles and behaves as documented there when only the class name and the
-/// include change.
+/// `CGAL::Surface_mesh_deformation`.
+///
+/// A program written for CGAL's class with its default template arguments
+/// compiles when only the class name and the include change, and keeps the
+/// semantics of the region of interest, the control vertices and their
+/// targets. What has no counterpart: CGAL's algorithm tags, weight
+/// calculator, closest rotation traits and `set_sre_arap_alpha()`. What
+/// differs: the default number of iterations (10 instead of 5) and the
+/// meaning of the tolerance (see `set_tolerance()`).
 ///
 /// As with CGAL's class, the user selects a region of interest (ROI) and, in
 /// it, control vertices whose target positions are set with
 /// `set_target_position()`, `translate()` or `rotate()`; `deform()` moves
 /// the vertices of the ROI. Vertices outside the ROI never move; those
-/// adjacent to the ROI hold it in place. Control vertices are also ROI
-/// vertices.
+/// adjacent to the ROI (the *fixed* vertices) hold it in place. Control
+/// vertices are also ROI vertices.
 ///
-/// **The region.** The work is done on the faces incident to the ROI
-/// vertices (the *region*), so that its cost follows the size of the ROI.
-/// Per region, `preprocess()` computes the manifold harmonics basis (the
-/// dominant cost, see `Manifold_harmonics_basis`), the reduced dual Laplacian
-/// matrix and the detail transfer factorization; they are kept as long as the
-/// ROI and the initial geometry do not change, and are reused by `reset()`,
+/// **Per region.** The work is done on the faces incident to the ROI
+/// vertices (the *region*: the ROI and the fixed vertices), so that its cost
+/// follows the size of the ROI; `n` below is the number of vertices of the
+/// region. Per region, `preprocess()` computes the manifold harmonics basis
+/// of the region (the dominant cost, see `Manifold_harmonics_basis`), its
+/// smooth rest shape, the reduced dual Laplacian matrix and the detail
+/// transfer system; they are kept as long as the ROI, the initial geometry
+/// and the number of frequencies do not change, and are reused by `reset()`,
 /// by constraint changes and by target changes. The basis can also be handed
 /// in (`set_basis()`) or read from a cache (`load_basis()`).
 ///
-/// **Per constraint set** (`preprocess()` after control vertices changed):
-/// the `m × m` reduced matrix is updated and factored, plus, for the exact
-/// policy, a sparse factorization of the detail transfer system.
+/// **Per constraint set** (`preprocess()` after the control vertices, the
+/// constraint weight or the policy changed): the `m × m` reduced matrix is
+/// updated and factored, plus, for the exact policy, a sparse factorization
+/// of the detail transfer system.
 ///
 /// **Per target change** (`deform()`): a rigid motion is fitted to every group
-/// of constrained vertices (the fixed vertices around the ROI; each connected
-/// set of control vertices) and carries the smooth mesh to its targets; the
-/// reduced system is iterated with `O(n m)` work per iteration; the details
-/// are transferred back with one back-substitution.
+/// of constrained vertices (the fixed vertices; each connected set of control
+/// vertices) and carries the smooth rest shape to its targets; the reduced
+/// system is iterated with `O(n m)` work per iteration; the details are
+/// transferred back with one back-substitution.
 ///
 /// **Defaults**: 100 frequencies, constraint weight 1, at most 10 iterations,
 /// tolerance 1e-4 on the relative step, `EXACT_CONSTRAINTS` (the semantics of
 /// CGAL's class, which a drop-in replacement must keep).
+///
+/// **Errors**: `preprocess()` and `deform()` do not throw
+/// `Spectral_deformation_error`: they report a failure in
+/// `preprocess_report()` and `deform_report()`, and a failed `deform()`
+/// leaves the mesh unchanged. The functions that set a target throw when it
+/// is not finite, and so do the parameter setters for invalid values.
 ///
 /// \tparam TM a model of `HalfedgeListGraph` and `FaceListGraph`, triangulated
 /// \tparam VIM a model of `ReadablePropertyMap` with `vertex_descriptor` as key
@@ -213,10 +252,12 @@ public:
   /// \name Construction
   /// @{
 
-  /// Creates a deformation object for `triangle_mesh`. The initial geometry
-  /// is the current one.
+  /// Creates a deformation object for `triangle_mesh`, with an empty ROI.
+  /// The initial geometry is the current one. As in CGAL, the last arguments
+  /// can be omitted (see the other constructors).
   ///
-  /// \param triangle_mesh the triangulated mesh to deform, which must outlive this object
+  /// \param triangle_mesh the triangulated mesh to deform, which must outlive
+  ///        this object; its connectivity must not change while it is used
   /// \param vertex_index_map unique vertex indices in `[0, num_vertices(triangle_mesh))`
   /// \param hedge_index_map unused, for compatibility
   /// \param vertex_point_map the positions, read and written
@@ -229,25 +270,33 @@ public:
     init();
   }
 
-  /// \cond SKIP_IN_MANUAL
+  /// Creates a deformation object for `triangle_mesh` with an initialized
+  /// vertex index map, an initialized halfedge index map and the internal
+  /// vertex point map `get(vertex_point, triangle_mesh)`.
   explicit Spectral_surface_mesh_deformation(Triangle_mesh& triangle_mesh)
     : Spectral_surface_mesh_deformation(triangle_mesh,
                                         CGAL::get_initialized_vertex_index_map(triangle_mesh))
   {}
 
+  /// Creates a deformation object for `triangle_mesh` with the given vertex
+  /// index map, an initialized halfedge index map and the internal vertex
+  /// point map.
   Spectral_surface_mesh_deformation(Triangle_mesh& triangle_mesh, Vertex_index_map vertex_index_map)
     : Spectral_surface_mesh_deformation(triangle_mesh, vertex_index_map,
                                         CGAL::get_initialized_halfedge_index_map(triangle_mesh))
   {}
 
+  /// Creates a deformation object for `triangle_mesh` with the given index
+  /// maps and the internal vertex point map.
   Spectral_surface_mesh_deformation(Triangle_mesh& triangle_mesh, Vertex_index_map vertex_index_map,
                                     Hedge_index_map hedge_index_map)
     : Spectral_surface_mesh_deformation(triangle_mesh, vertex_index_map, hedge_index_map,
                                         get(vertex_point, triangle_mesh))
   {}
-  /// \endcond
 
+  /// Not copyable, as in CGAL: the object refers to the mesh it deforms.
   Spectral_surface_mesh_deformation(const Spectral_surface_mesh_deformation&) = delete;
+  /// Not assignable, as in CGAL.
   Spectral_surface_mesh_deformation& operator=(const Spectral_surface_mesh_deformation&) = delete;
 
   /// @}
@@ -271,9 +320,9 @@ public:
     m_constraints_valid = false;
   }
 
-  /// Inserts `vd` in the set of control vertices, and in the ROI if needed.
-  /// Its target is its current position. Returns `true` if `vd` was not a
-  /// control vertex.
+  /// Inserts `vd` in the set of control vertices, and in the ROI if needed
+  /// (which changes the region). Its target is its current position. Returns
+  /// `true` if `vd` was not a control vertex.
   bool insert_control_vertex(vertex_descriptor vd)
   {
     if(is_control_vertex(vd))
@@ -314,7 +363,8 @@ public:
       insert_roi_vertex(*begin);
   }
 
-  /// Inserts `vd` in the ROI. Returns `true` if it was not in it.
+  /// Inserts `vd` in the ROI. Returns `true` if it was not in it; the region
+  /// is then rebuilt, basis included, by the next `preprocess()`.
   bool insert_roi_vertex(vertex_descriptor vd)
   {
     if(is_roi_vertex(vd))
@@ -341,8 +391,9 @@ public:
 
   /// Prepares `deform()` for the current ROI and control vertices; called by
   /// `deform()` when needed. Builds the region (basis, reduced matrices,
-  /// detail transfer) when the ROI or the initial geometry changed, then
-  /// factors the systems of the constraint set.
+  /// detail transfer) when the ROI, the initial geometry or the number of
+  /// frequencies changed, then factors the systems of the constraint set.
+  /// Returns at once when nothing changed since its last success.
   ///
   /// Returns `false`, with the reason in `preprocess_report().message`, when
   /// the ROI is empty, there is no constraint at all, a connected part of the
@@ -382,7 +433,8 @@ public:
   /// \name Targets
   /// @{
 
-  /// Sets the target position of the control vertex `vd`.
+  /// Sets the target position of the control vertex `vd`; does nothing when
+  /// `vd` is not a control vertex.
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when
   ///         `target_position` is not finite (the target is then unchanged).
   void set_target_position(vertex_descriptor vd, const Point& target_position)
@@ -393,8 +445,11 @@ public:
     m_target[id(vd)] = target_position;
   }
 
-  /// Translates the target of the control vertex `vd` by `t`.
+  /// Translates the target of the control vertex `vd` by `t`; does nothing
+  /// when `vd` is not a control vertex.
   /// \tparam Vect a 3D vector with `operator[](int)` and a constructor from three coordinates
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when the new
+  ///         target is not finite.
   template <class Vect>
   void translate(vertex_descriptor vd, const Vect& t)
   {
@@ -404,7 +459,8 @@ public:
     set_target_position(vd, Point(p[0] + t[0], p[1] + t[1], p[2] + t[2]));
   }
 
-  /// Translates the targets of the control vertices of `[begin, end)` by `t`.
+  /// Translates the targets of the control vertices of `[begin, end)` by `t`
+  /// (see the single-vertex overload).
   template <class InputIterator, class Vect>
   void translate(InputIterator begin, InputIterator end, const Vect& t)
   {
@@ -413,9 +469,12 @@ public:
   }
 
   /// Rotates the target of the control vertex `vd` by `quat` around the
-  /// point at `to_rotation_center` from the origin (cumulative, as in CGAL).
+  /// point at `to_rotation_center` from the origin (cumulative, as in CGAL);
+  /// does nothing when `vd` is not a control vertex.
   /// \tparam Quaternion a quaternion with `Vect operator*(Quaternion, Vect)`
   /// \tparam Vect a 3D vector with `operator[](int)` and a constructor from three coordinates
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when the new
+  ///         target is not finite.
   template <typename Quaternion, typename Vect>
   void rotate(vertex_descriptor vd, const Vect& to_rotation_center, const Quaternion& quat)
   {
@@ -429,7 +488,8 @@ public:
                                   to_rotation_center[2] + v[2]));
   }
 
-  /// Rotates the targets of the control vertices of `[begin, end)`.
+  /// Rotates the targets of the control vertices of `[begin, end)` (see the
+  /// single-vertex overload).
   template <typename InputIterator, typename Vect, typename Quaternion>
   void rotate(InputIterator begin, InputIterator end, const Vect& to_rotation_center,
               const Quaternion& quat)
@@ -438,7 +498,8 @@ public:
       rotate(*begin, to_rotation_center, quat);
   }
 
-  /// The target position of the control vertex `vd`.
+  /// The target position of the control vertex `vd` (`vd` must be a control
+  /// vertex, as in CGAL).
   const Point& target_position(vertex_descriptor vd) { return m_target[id(vd)]; }
 
   /// @}
@@ -451,11 +512,14 @@ public:
   void deform() { deform(m_iterations, m_tolerance); }
 
   /// Deforms the ROI towards the targets of the control vertices with at most
-  /// `iterations` solves; stops earlier when the relative step falls below
-  /// `tolerance`. A second call continues from the previous result (the
-  /// iteration goes on), as in CGAL. Nothing happens when `preprocess()`
-  /// fails; the reason and the statistics are in `deform_report()`. The mesh
-  /// is only written when the deformation succeeds.
+  /// `iterations` solves (0 counts as 1); stops earlier when the relative
+  /// step falls below `tolerance`. A second call continues from the previous
+  /// result (the iteration goes on), as in CGAL, except with
+  /// `SPECTRAL_LINEAR`. Nothing happens when `preprocess()` fails; the reason
+  /// and the statistics are in `deform_report()`. The positions of the ROI
+  /// vertices are only written when the deformation succeeds; a numerical
+  /// failure (non-finite values, a diverging iteration, a degenerate face of
+  /// the smooth deformed mesh) leaves the mesh unchanged.
   void deform(unsigned int iterations, double tolerance)
   {
     const auto start = std::chrono::steady_clock::now();
@@ -521,16 +585,21 @@ public:
   double tolerance() { return m_tolerance; }
   /// Sets the maximal number of solves run by `deform()`; 0 counts as 1.
   void set_iterations(unsigned int iterations) { m_iterations = iterations; }
-  /// Sets the tolerance: the iteration stops when the step of the positions,
-  /// in the L² norm of the surface divided by the square root of the area and
-  /// by the bounding-box diagonal of the region, falls below it; 0 runs all
-  /// iterations.
+  /// Sets the tolerance: the iteration stops when the relative step falls
+  /// below it; 0 runs all iterations. The relative step is the change of the
+  /// positions of the region between two solves, measured in the \f$ L^2 \f$
+  /// norm of the surface (the \f$ M \f$-norm) and divided by the square root
+  /// of the area and by the bounding-box diagonal of the region; with
+  /// `SPATIAL_DUAL_LAPLACIAN`, it is the root mean square of the vertex
+  /// displacements divided by the diagonal. (CGAL's tolerance is on the
+  /// relative change of the ARAP energy instead.)
   void set_tolerance(double tolerance) { m_tolerance = tolerance; }
 
   /// The number of frequencies `m` of the basis (default 100).
   std::size_t number_of_frequencies() const { return m_frequencies; }
   /// Sets the number of frequencies; a region with fewer vertices uses all of
-  /// them. Takes effect when the region is next built (it is rebuilt).
+  /// them. A different value makes the next `preprocess()` rebuild the
+  /// region, basis included. Not used by `SPATIAL_DUAL_LAPLACIAN`.
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `m` is 0.
   void set_number_of_frequencies(std::size_t m)
   {
@@ -543,12 +612,13 @@ public:
       m_constraints_valid = false;
     }
   }
-  /// The weight of the constraints in the reduced least squares system (default 1).
+  /// The weight `w` of the constraints in the reduced least squares system (default 1).
   double constraint_weight() const { return m_weight; }
-  /// Sets the constraint weight. Larger weights meet the constraints of the
-  /// smooth mesh more closely but the truncated basis cannot form sharp
-  /// transitions, which degrades the result; smaller weights loosen the
-  /// constraints.
+  /// Sets the constraint weight, a change of the constraint set. Larger
+  /// weights meet the constraints of the smooth mesh more closely but the
+  /// truncated basis cannot form sharp transitions, which degrades the
+  /// result; smaller weights loosen the constraints. Not used by
+  /// `SPATIAL_DUAL_LAPLACIAN`.
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) unless `w` is positive and finite.
   void set_constraint_weight(double w)
   {
@@ -559,7 +629,8 @@ public:
   }
   /// The constraint policy (default `EXACT_CONSTRAINTS`).
   Spectral_constraint_policy constraint_policy() const { return m_policy; }
-  /// Sets the constraint policy.
+  /// Sets the constraint policy; a different policy is a change of the
+  /// constraint set. Not used by `SPATIAL_DUAL_LAPLACIAN`.
   void set_constraint_policy(Spectral_constraint_policy policy)
   {
     if(policy != m_policy)
@@ -568,7 +639,8 @@ public:
       m_constraints_valid = false;
     }
   }
-  /// Sets the eigensolver used when the basis is computed.
+  /// Sets the eigensolver used when a basis is next computed; a basis already
+  /// computed is kept.
   void set_eigensolver_traits(const Eigensolver_traits& traits) { m_eigensolver = traits; }
 
   /// @}
@@ -576,11 +648,13 @@ public:
   /// \name Basis cache
   /// @{
 
-  /// Hands in a precomputed basis. It is used when the region is the mesh on
-  /// which `basis` was computed (the ROI is the whole mesh, and the geometry
-  /// is the initial one), instead of computing one; its number of
-  /// frequencies then prevails. Otherwise it is ignored and
-  /// `preprocess_report().basis_computed` tells.
+  /// Hands in a precomputed basis. It is used instead of computing one when
+  /// the region is the mesh on which `basis` was computed: every face has a
+  /// vertex in the ROI (for instance, the ROI is the whole mesh), the
+  /// vertices are indexed alike and the initial geometry is the one `basis`
+  /// was computed with. Its number of frequencies then prevails. Otherwise
+  /// it is ignored and `preprocess_report().basis_computed` tells. Not used
+  /// by `SPATIAL_DUAL_LAPLACIAN`.
   template <class EigensolverTraits>
   void set_basis(const Manifold_harmonics_basis<TM, EigensolverTraits>& basis)
   {
@@ -606,7 +680,9 @@ public:
 
   /// Reads a basis written by `save_basis()` (or by
   /// `Manifold_harmonics_basis::save()`) and uses it for the current region
-  /// instead of computing one.
+  /// instead of computing one: the region is rebuilt by the next
+  /// `preprocess()`, with this basis. The basis is checked against the
+  /// region of the current ROI and initial geometry.
   /// \throws Spectral_deformation_error with code `IO_ERROR` (unreadable or
   ///         corrupted stream), `MESH_MISMATCH` (the basis belongs to another
   ///         region or geometry) or `INVALID_MESH`; nothing changes then.
@@ -630,9 +706,10 @@ public:
   /// What the last `deform()` did.
   const Spectral_deformation_report& deform_report() const { return m_deform_report; }
 
-  /// The smooth rest position of `vd` (its low-pass reconstruction with the
-  /// basis of the region), or its initial position when `vd` is not in the
-  /// region or no region is built (the paper's Fig. 1, second shape).
+  /// The smooth rest position of `vd`, the second shape of the paper's
+  /// pipeline figure: its low-pass reconstruction \f$ H H^\top M V \f$ with
+  /// the basis of the region. It is the initial position when `vd` is not in
+  /// the region, when no region is built, or with `SPATIAL_DUAL_LAPLACIAN`.
   Point smoothed_rest_point(vertex_descriptor vd) const
   {
     const int i = local_index(vd);
@@ -642,8 +719,10 @@ public:
   }
 
   /// The smooth deformed position of `vd` after the last successful
-  /// `deform()` (the paper's Fig. 1, third shape); the smooth rest position
-  /// before any deformation.
+  /// `deform()`, the third shape of the paper's pipeline figure; the smooth
+  /// rest position before any deformation or after `reset()`. It is the
+  /// initial position when `vd` is not in the region, when no region is
+  /// built, or with `SPATIAL_DUAL_LAPLACIAN`.
   Point smoothed_deformed_point(vertex_descriptor vd) const
   {
     const int i = local_index(vd);
@@ -669,7 +748,7 @@ public:
   const Triangle_mesh& triangle_mesh() const { return m_tm; }
   /// The vertex index map.
   const Vertex_index_map& vertex_index_map() const { return m_vim; }
-  /// The halfedge index map.
+  /// The halfedge index map (not used by the deformation).
   Hedge_index_map hedge_index_map() const { return m_him; }
 
   /// @}

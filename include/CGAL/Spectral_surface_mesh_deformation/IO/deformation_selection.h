@@ -23,7 +23,10 @@ namespace IO {
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationIO
 /// The role of a vertex in a deformation selection (`.sel` file of the
-/// Botsch and Sorkine 2008 benchmark).
+/// benchmark of Botsch and Sorkine 2008). The region of interest of a
+/// `Spectral_surface_mesh_deformation` is made of the `ROI_VERTEX` and
+/// `HANDLE_VERTEX` vertices, and its control vertices of the
+/// `HANDLE_VERTEX` vertices.
 enum Deformation_vertex_status {
   FIXED_VERTEX = 0,   ///< outside the region of interest: does not move
   ROI_VERTEX = 1,     ///< in the region of interest, free
@@ -31,16 +34,18 @@ enum Deformation_vertex_status {
 };
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationIO
-/// Reads a `.sel` file: lines starting with `#` are comments, then one status
-/// (0, 1 or 2, see `Deformation_vertex_status`) per vertex, in the vertex
-/// order of the mesh file.
+/// Reads a `.sel` file: one status (0, 1 or 2, see
+/// `Deformation_vertex_status`) per vertex, in the vertex order of the mesh
+/// file, separated by white space; a `#` starts a comment that runs to the
+/// end of its line.
 ///
 /// \param is the stream
 /// \param number_of_vertices the expected number of statuses
 /// \returns one status per vertex
 /// \throws Spectral_deformation_error (`IO_ERROR`) when the stream holds
 ///         anything else than comments and statuses, a status other than 0, 1
-///         or 2, or not exactly `number_of_vertices` of them.
+///         or 2, or not exactly `number_of_vertices` of them, or cannot be
+///         read.
 inline std::vector<Deformation_vertex_status> read_selection(std::istream& is,
                                                              std::size_t number_of_vertices)
 {
@@ -79,11 +84,16 @@ inline std::vector<Deformation_vertex_status> read_selection(std::istream& is,
 }
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationIO
-/// Reads a `.def` file: an optional comment line starting with `#`, then a
-/// 4×4 affine matrix, row-major, applied to the handle vertices (homogeneous
-/// coordinates, points as columns).
-/// \throws Spectral_deformation_error (`IO_ERROR`) when fewer than 16 finite
-///         numbers follow, or the last row is not `0 0 0 1`.
+/// Reads a `.def` file: a 4×4 affine matrix, row-major, that moves the
+/// handle vertices (homogeneous coordinates, points as columns: a point `p`
+/// goes to the first three entries of the product of the matrix with
+/// `(p, 1)`). A `#` starts a comment that runs to the end of its line.
+///
+/// \param is the stream
+/// \returns the matrix
+/// \throws Spectral_deformation_error (`IO_ERROR`) when the stream does not
+///         hold exactly 16 finite numbers besides comments, or the last row
+///         is not `0 0 0 1`.
 inline Eigen::Matrix4d read_handle_transformation(std::istream& is)
 {
   typedef Spectral_deformation_error Error;
@@ -108,7 +118,13 @@ inline Eigen::Matrix4d read_handle_transformation(std::istream& is)
 }
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationIO
-/// Opens and reads a `.sel` file; see `read_selection()`.
+/// Opens and reads a `.sel` file; see the overload that reads a stream.
+///
+/// \param filename the name of the file
+/// \param number_of_vertices the expected number of statuses
+/// \returns one status per vertex
+/// \throws Spectral_deformation_error (`IO_ERROR`) when the file cannot be
+///         opened or its content is not valid.
 inline std::vector<Deformation_vertex_status> read_selection(const std::string& filename,
                                                              std::size_t number_of_vertices)
 {
@@ -120,7 +136,12 @@ inline std::vector<Deformation_vertex_status> read_selection(const std::string& 
 }
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationIO
-/// Opens and reads a `.def` file; see `read_handle_transformation()`.
+/// Opens and reads a `.def` file; see the overload that reads a stream.
+///
+/// \param filename the name of the file
+/// \returns the matrix
+/// \throws Spectral_deformation_error (`IO_ERROR`) when the file cannot be
+///         opened or its content is not valid.
 inline Eigen::Matrix4d read_handle_transformation(const std::string& filename)
 {
   std::ifstream is(filename);
