@@ -232,6 +232,7 @@ private:
   typedef Spectral_deformation::internal::Triangle_arrays Triangle_arrays;
   typedef Spectral_deformation_error Error;
 
+  /// \cond SKIP_IN_MANUAL
   // Everything that depends only on the ROI and the initial geometry.
   struct Region
   {
@@ -245,6 +246,7 @@ private:
     Spectral_deformation::internal::Detail_transfer<Sparse_solver_traits> detail;
     std::unique_ptr<Spectral_deformation::internal::Spatial_dual_laplacian_solver<Sparse_solver_traits>> spatial;
   };
+  /// \endcond
 
   static constexpr bool is_spectral = (TAG != SPATIAL_DUAL_LAPLACIAN);
 
@@ -532,11 +534,18 @@ public:
     try
     {
       Positions result;
+      Eigen::MatrixXd coefficients;
       if(is_spectral)
-        deform_spectral(std::max(1u, iterations), tolerance, result);
+        deform_spectral(std::max(1u, iterations), tolerance, result, coefficients);
       else
         deform_spatial(std::max(1u, iterations), tolerance, result);
       write_result(result);
+      // The iteration state changes only with the mesh.
+      if(is_spectral)
+        m_coefficients.swap(coefficients);
+      else
+        m_spatial_solution = result;
+      m_has_solution = true;
       m_deform_report.success = true;
     }
     catch(const Error& e)
@@ -954,6 +963,8 @@ private:
         if(!region.detail.prepare_dirichlet(prescribed))
           throw Error(Error::SOLVER_FAILURE, "the factorization of the detail transfer failed");
       }
+      else if(!region.detail.prepare_pinned())
+        throw Error(Error::SOLVER_FAILURE, "the factorization of the detail transfer failed");
     }
     else if(!region.spatial->preprocess(m_constrained, 0.0))
       throw Error(Error::SOLVER_FAILURE, region.spatial->error_message());
@@ -1028,7 +1039,8 @@ private:
     return targets;
   }
 
-  void deform_spectral(unsigned int iterations, double tolerance, Positions& result)
+  void deform_spectral(unsigned int iterations, double tolerance, Positions& result,
+                       Eigen::MatrixXd& coefficients)
   {
     Region& region = *m_region;
     const Positions targets = constrained_targets();
@@ -1059,8 +1071,7 @@ private:
     }
 
     const bool linear = (TAG == SPECTRAL_LINEAR);
-    Eigen::MatrixXd coefficients =
-        (m_has_solution && !linear) ? m_coefficients : region.spectral.rest_coefficients();
+    coefficients = (m_has_solution && !linear) ? m_coefficients : region.spectral.rest_coefficients();
     const Spectral_deformation::internal::Iteration_report report = region.spectral.solve(
         smooth_targets, coefficients, linear ? 0 : static_cast<int>(iterations) - 1, tolerance);
     if(!report.success)
@@ -1086,8 +1097,6 @@ private:
       throw Error(Error::SOLVER_FAILURE, "the detail transfer failed (a face of the smooth "
                                          "deformed mesh is degenerate)");
     m_deform_report.detail_transfer_seconds = seconds_since(transfer_start);
-    m_coefficients = coefficients;
-    m_has_solution = true;
     report_residuals(result, targets);
   }
 
@@ -1105,8 +1114,6 @@ private:
     m_deform_report.last_step = report.last_step;
     m_deform_report.converged = report.converged;
     m_deform_report.solve_seconds = seconds_since(start);
-    m_spatial_solution = result;
-    m_has_solution = true;
     report_residuals(result, targets);
   }
 

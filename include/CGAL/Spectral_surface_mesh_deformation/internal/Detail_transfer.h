@@ -30,7 +30,8 @@ namespace internal {
 /// the detailed mesh (the gradient form of min Σ_f A_f |∇Y - T_f ∇V|²).
 ///
 /// Two ways to fix the free translation of each connected component:
-/// - soft: one pinned vertex per component, factored once per mesh; the
+/// - soft: one pinned vertex per component, factored once per mesh
+///   (`prepare_pinned()`); the
 ///   translation is then fitted to the constrained vertices;
 /// - exact: a Dirichlet problem with prescribed vertices, factored once per
 ///   set of prescribed vertices; they keep their prescribed positions exactly.
@@ -66,8 +67,18 @@ public:
       m_inverse_frames[static_cast<std::size_t>(f)] = lu.inverse();
     }
 
-    // Soft policy: pin the first vertex of every component.
     m_component = connected_components(m_triangles, m_rest.rows(), m_number_of_components);
+    m_pinned_ready = false;
+    m_dirichlet_ready = false;
+  }
+
+  /// Soft policy: factor the system with the first vertex of every component
+  /// pinned (once per mesh; later calls do nothing). Returns false when the
+  /// factorization fails.
+  bool prepare_pinned()
+  {
+    if(m_pinned_ready)
+      return true;
     std::vector<char> pinned(static_cast<std::size_t>(m_rest.rows()), 0);
     std::vector<char> seen(static_cast<std::size_t>(m_number_of_components), 0);
     for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
@@ -79,9 +90,8 @@ public:
         pinned[static_cast<std::size_t>(i)] = 1;
       }
     }
-    if(!m_pinned.factor(m_stiffness, pinned))
-      throw Error(Error::SOLVER_FAILURE, "the factorization of the detail transfer system failed");
-    m_dirichlet_ready = false;
+    m_pinned_ready = m_pinned.factor(m_stiffness, pinned);
+    return m_pinned_ready;
   }
 
   /// Exact policy: factor the system with the vertices flagged in
@@ -127,7 +137,7 @@ public:
                      const Positions& targets, Positions& result) const
   {
     Eigen::MatrixXd y;
-    if(!m_pinned.solve(right_hand_side(smooth_deformed), Eigen::MatrixXd::Zero(m_rest.rows(), 3), y))
+    if(!m_pinned_ready || !m_pinned.solve(right_hand_side(smooth_deformed), Eigen::MatrixXd::Zero(m_rest.rows(), 3), y))
       return false;
     Eigen::MatrixXd offset = Eigen::MatrixXd::Zero(m_number_of_components, 3);
     Eigen::VectorXd count = Eigen::VectorXd::Zero(m_number_of_components);
@@ -188,6 +198,7 @@ private:
   int m_number_of_components = 0;
   Dirichlet_system<SparseSPDSolverTraits> m_pinned;
   Dirichlet_system<SparseSPDSolverTraits> m_dirichlet;
+  bool m_pinned_ready = false;
   bool m_dirichlet_ready = false;
 };
 
