@@ -73,12 +73,15 @@ enum Spectral_constraint_policy {
   /// and the fixed vertices are prescribed; `preprocess()` factors it once
   /// per constraint set, a sparse factorization of the size of the region.
   EXACT_CONSTRAINTS,
-  /// The paper's formulation: the detail transfer only fits, per connected
-  /// part of the region, the translation that best matches the constrained
-  /// vertices, so that a new constraint set costs no sparse factorization at
-  /// all (only the `m × m` one). Control vertices land near their targets,
-  /// and the region of interest near the fixed vertices; the residuals are in
-  /// `Spectral_deformation_report`.
+  /// The paper's formulation: the control vertices are met in the least
+  /// squares sense only. The detail transfer prescribes the fixed vertices
+  /// around the region of interest, which only change with the region, so it
+  /// is factored once per region and a new constraint set costs no sparse
+  /// factorization at all (only the `m × m` one); in a connected part of the
+  /// region without fixed vertices, the translation that best matches the
+  /// control vertices is fitted. Control vertices land near their targets
+  /// (the residuals are in `Spectral_deformation_report`); the region joins
+  /// the fixed vertices as with the exact policy.
   SOFT_CONSTRAINTS
 };
 
@@ -963,7 +966,7 @@ private:
         if(!region.detail.prepare_dirichlet(prescribed))
           throw Error(Error::SOLVER_FAILURE, "the factorization of the detail transfer failed");
       }
-      else if(!region.detail.prepare_pinned())
+      else if(!region.detail.prepare_soft(region.is_fixed))
         throw Error(Error::SOLVER_FAILURE, "the factorization of the detail transfer failed");
     }
     else if(!region.spatial->preprocess(m_constrained, 0.0))
@@ -1092,7 +1095,15 @@ private:
       transferred = region.detail.transfer_exact(smooth_deformed, prescribed, result);
     }
     else
-      transferred = region.detail.transfer_soft(smooth_deformed, m_constrained, targets, result);
+    {
+      // The fixed vertices around the ROI are anchored: only the control
+      // vertices are soft.
+      Positions anchored(rest.rows(), 3);
+      for(std::size_t i = 0; i < region.is_fixed.size(); ++i)
+        if(region.is_fixed[i])
+          anchored.row(static_cast<Eigen::Index>(i)) = rest.row(static_cast<Eigen::Index>(i));
+      transferred = region.detail.transfer_soft(smooth_deformed, anchored, m_constrained, targets, result);
+    }
     if(!transferred)
       throw Error(Error::SOLVER_FAILURE, "the detail transfer failed (a face of the smooth "
                                          "deformed mesh is degenerate)");

@@ -30,9 +30,9 @@ namespace internal {
 /// the detailed mesh (the gradient form of min Σ_f A_f |∇Y - T_f ∇V|²).
 ///
 /// Two ways to fix the free translation of each connected component:
-/// - soft: one pinned vertex per component, factored once per mesh
-///   (`prepare_pinned()`); the
-///   translation is then fitted to the constrained vertices;
+/// - soft: the vertices that never move are prescribed (and one pinned
+///   vertex in a component without any, whose translation is then fitted to
+///   the constrained vertices), factored once per mesh (`prepare_soft()`);
 /// - exact: a Dirichlet problem with prescribed vertices, factored once per
 ///   set of prescribed vertices; they keep their prescribed positions exactly.
 template <class SparseSPDSolverTraits = Default_sparse_spd_solver_traits>
@@ -68,30 +68,36 @@ public:
     }
 
     m_component = connected_components(m_triangles, m_rest.rows(), m_number_of_components);
-    m_pinned_ready = false;
+    m_soft_ready = false;
     m_dirichlet_ready = false;
   }
 
-  /// Soft policy: factor the system with the first vertex of every component
-  /// pinned (once per mesh; later calls do nothing). Returns false when the
-  /// factorization fails.
-  bool prepare_pinned()
+  /// Soft policy: factor, once per mesh (later calls do nothing), the
+  /// system with the vertices flagged in `anchored` prescribed (the vertices
+  /// that never move), plus the first vertex of every component without an
+  /// anchored vertex, whose translation is fitted afterwards. Returns false
+  /// when the factorization fails.
+  bool prepare_soft(const std::vector<char>& anchored)
   {
-    if(m_pinned_ready)
+    if(m_soft_ready)
       return true;
-    std::vector<char> pinned(static_cast<std::size_t>(m_rest.rows()), 0);
-    std::vector<char> seen(static_cast<std::size_t>(m_number_of_components), 0);
-    for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
+    std::vector<char> prescribed = anchored;
+    m_floating.assign(static_cast<std::size_t>(m_number_of_components), 1);
+    for(std::size_t i = 0; i < anchored.size(); ++i)
+      if(anchored[i])
+        m_floating[static_cast<std::size_t>(m_component[i])] = 0;
+    std::vector<char> pinned(static_cast<std::size_t>(m_number_of_components), 0);
+    for(std::size_t i = 0; i < prescribed.size(); ++i)
     {
-      const int c = m_component[static_cast<std::size_t>(i)];
-      if(!seen[static_cast<std::size_t>(c)])
+      const std::size_t c = static_cast<std::size_t>(m_component[i]);
+      if(m_floating[c] && !pinned[c])
       {
-        seen[static_cast<std::size_t>(c)] = 1;
-        pinned[static_cast<std::size_t>(i)] = 1;
+        pinned[c] = 1;
+        prescribed[i] = 1;
       }
     }
-    m_pinned_ready = m_pinned.factor(m_stiffness, pinned);
-    return m_pinned_ready;
+    m_soft_ready = m_soft.factor(m_stiffness, prescribed);
+    return m_soft_ready;
   }
 
   /// Exact policy: factor the system with the vertices flagged in
@@ -130,20 +136,30 @@ public:
     return rhs;
   }
 
-  /// Soft policy: positions whose translation per component is the mean
-  /// offset to `targets` at the `constrained` vertices. Returns false when a
-  /// solve fails.
-  bool transfer_soft(const Positions& smooth_deformed, const std::vector<int>& constrained,
-                     const Positions& targets, Positions& result) const
+  /// Soft policy: positions with the anchored vertices at
+  /// `anchored_positions` (n×3, other rows ignored); a component without
+  /// anchored vertex is translated by the mean offset to `targets` at its
+  /// `constrained` vertices. Returns false when a solve fails.
+  bool transfer_soft(const Positions& smooth_deformed, const Positions& anchored_positions,
+                     const std::vector<int>& constrained, const Positions& targets,
+                     Positions& result) const
   {
+    if(!m_soft_ready)
+      return false;
+    Eigen::MatrixXd prescribed = anchored_positions;
+    for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
+      if(m_floating[static_cast<std::size_t>(m_component[static_cast<std::size_t>(i)])])
+        prescribed.row(i).setZero(); // the pinned vertex, whichever it is
     Eigen::MatrixXd y;
-    if(!m_pinned_ready || !m_pinned.solve(right_hand_side(smooth_deformed), Eigen::MatrixXd::Zero(m_rest.rows(), 3), y))
+    if(!m_soft.solve(right_hand_side(smooth_deformed), prescribed, y))
       return false;
     Eigen::MatrixXd offset = Eigen::MatrixXd::Zero(m_number_of_components, 3);
     Eigen::VectorXd count = Eigen::VectorXd::Zero(m_number_of_components);
     for(std::size_t k = 0; k < constrained.size(); ++k)
     {
       const int c = m_component[static_cast<std::size_t>(constrained[k])];
+      if(!m_floating[static_cast<std::size_t>(c)])
+        continue;
       offset.row(c) += targets.row(static_cast<Eigen::Index>(k)) - y.row(constrained[k]);
       count[c] += 1;
     }
@@ -196,9 +212,10 @@ private:
   std::vector<Eigen::Matrix3d> m_inverse_frames;
   std::vector<int> m_component;
   int m_number_of_components = 0;
-  Dirichlet_system<SparseSPDSolverTraits> m_pinned;
+  Dirichlet_system<SparseSPDSolverTraits> m_soft;
+  std::vector<char> m_floating; // per component: no anchored vertex
   Dirichlet_system<SparseSPDSolverTraits> m_dirichlet;
-  bool m_pinned_ready = false;
+  bool m_soft_ready = false;
   bool m_dirichlet_ready = false;
 };
 
