@@ -266,6 +266,9 @@ public:
   /// \param vertex_index_map unique vertex indices in `[0, num_vertices(triangle_mesh))`
   /// \param hedge_index_map unused, for compatibility
   /// \param vertex_point_map the positions, read and written
+  /// \throws Spectral_deformation_error (`INVALID_MESH`) when the vertex
+  ///         index map is not a bijection onto `[0, num_vertices(triangle_mesh))`
+  ///         (a `Surface_mesh` with removed, not yet collected, elements).
   Spectral_surface_mesh_deformation(Triangle_mesh& triangle_mesh,
                                     Vertex_index_map vertex_index_map,
                                     Hedge_index_map hedge_index_map,
@@ -328,10 +331,13 @@ public:
   /// Inserts `vd` in the set of control vertices, and in the ROI if needed
   /// (which changes the region). Its target is its current position. Returns
   /// `true` if `vd` was not a control vertex.
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `vd` is not
+  ///         a vertex of the mesh (null, or an index out of range).
   bool insert_control_vertex(vertex_descriptor vd)
   {
     if(is_control_vertex(vd))
       return false;
+    checked_id(vd);
     insert_roi_vertex(vd);
     m_is_control[id(vd)] = 1;
     m_target[id(vd)] = get(m_vpm, vd);
@@ -370,11 +376,13 @@ public:
 
   /// Inserts `vd` in the ROI. Returns `true` if it was not in it; the region
   /// is then rebuilt, basis included, by the next `preprocess()`.
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `vd` is not
+  ///         a vertex of the mesh (null, or an index out of range).
   bool insert_roi_vertex(vertex_descriptor vd)
   {
     if(is_roi_vertex(vd))
       return false;
-    m_is_roi[id(vd)] = 1;
+    m_is_roi[checked_id(vd)] = 1;
     m_roi.push_back(vd);
     roi_changed();
     return true;
@@ -505,7 +513,7 @@ public:
 
   /// The target position of the control vertex `vd` (`vd` must be a control
   /// vertex, as in CGAL).
-  const Point& target_position(vertex_descriptor vd) { return m_target[id(vd)]; }
+  const Point& target_position(vertex_descriptor vd) { return m_target[checked_id(vd)]; }
 
   /// @}
 
@@ -753,9 +761,12 @@ public:
   /// The vertices of the ROI.
   const Roi_vertex_range& roi_vertices() const { return m_roi; }
   /// Whether `vd` is in the ROI.
-  bool is_roi_vertex(vertex_descriptor vd) const { return m_is_roi[id(vd)] != 0; }
+  bool is_roi_vertex(vertex_descriptor vd) const { return has_index(vd) && m_is_roi[id(vd)] != 0; }
   /// Whether `vd` is a control vertex.
-  bool is_control_vertex(vertex_descriptor vd) const { return m_is_control[id(vd)] != 0; }
+  bool is_control_vertex(vertex_descriptor vd) const
+  {
+    return has_index(vd) && m_is_control[id(vd)] != 0;
+  }
   /// The mesh being deformed.
   const Triangle_mesh& triangle_mesh() const { return m_tm; }
   /// The vertex index map.
@@ -772,9 +783,32 @@ private:
     m_is_roi.assign(n, 0);
     m_is_control.assign(n, 0);
     m_original.resize(n);
+    std::vector<char> seen(n, 0);
     for(vertex_descriptor vd : vertices(m_tm))
-      m_original[id(vd)] = get(m_vpm, vd);
+    {
+      const std::size_t i = id(vd);
+      if(i >= n || seen[i])
+        throw Error(Error::INVALID_MESH,
+                    "the vertex index map is not a bijection onto [0, number of vertices) "
+                    "(for a Surface_mesh with removed elements, call collect_garbage() first)");
+      seen[i] = 1;
+      m_original[i] = get(m_vpm, vd);
+    }
     m_target = m_original;
+  }
+
+  // The index of `vd`, or an exception when `vd` is not a vertex of the mesh
+  // as it was at construction.
+  std::size_t checked_id(vertex_descriptor vd) const
+  {
+    if(!has_index(vd))
+      throw Error(Error::INVALID_ARGUMENT, "the vertex is not a vertex of the mesh");
+    return id(vd);
+  }
+
+  bool has_index(vertex_descriptor vd) const
+  {
+    return vd != boost::graph_traits<TM>::null_vertex() && id(vd) < m_is_roi.size();
   }
 
   std::size_t id(vertex_descriptor vd) const { return static_cast<std::size_t>(get(m_vim, vd)); }
@@ -910,6 +944,9 @@ private:
 
   void preprocess_or_throw()
   {
+    if(static_cast<std::size_t>(num_vertices(m_tm)) != m_is_roi.size())
+      throw Error(Error::INVALID_MESH, "the number of vertices of the mesh changed since the "
+                                       "construction of the deformation object");
     if(m_roi.empty())
       throw Error(Error::INVALID_ARGUMENT, "the region of interest is empty");
     if(!m_region)

@@ -73,7 +73,18 @@ public:
     Eigen::MatrixXd A = m_G0;
     A.selfadjointView<Eigen::Lower>().rankUpdate(m_constrained_rows.transpose(), weight * weight);
     A.triangularView<Eigen::StrictlyUpper>() = A.transpose();
+    m_regularization = 0;
     m_cholesky.compute(A);
+    if(m_cholesky.info() != Eigen::Success)
+    {
+      // A constraint set can leave directions free (a tube held by one ring
+      // may stretch along its axis at no cost): a tiny Tikhonov term, towards
+      // the current shape in solve(), makes Ã definite and picks the solution
+      // that moves least in those directions.
+      m_regularization = 1e-10 * A.trace() / double(A.rows());
+      A.diagonal().array() += m_regularization;
+      m_cholesky.compute(A);
+    }
     m_factored = (m_cholesky.info() == Eigen::Success);
     return m_factored;
   }
@@ -102,7 +113,7 @@ public:
       const Positions coordinates = (-m_rest_coordinates.heights).asDiagonal() * now.normals;
       previous_normals = now.normals;
       const Eigen::MatrixXd rhs =
-          H.transpose() * (m_LF_transpose * coordinates) + constraint_rhs;
+          H.transpose() * (m_LF_transpose * coordinates) + constraint_rhs + m_regularization * current;
       const Eigen::MatrixXd next = m_cholesky.solve(rhs);
       if(!next.allFinite())
         return report.failed("the iteration produced non-finite values");
@@ -138,6 +149,7 @@ private:
   std::vector<int> m_constrained;
   Eigen::MatrixXd m_constrained_rows;
   double m_weight = 1;
+  double m_regularization = 0;
   Eigen::LLT<Eigen::MatrixXd> m_cholesky;
   bool m_factored = false;
 };
