@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # The tests: installs what is missing, builds in Release, runs the Catch2
-# suite and the documentation check through ctest.
+# suite, the examples and the documentation check through ctest.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${SSMD_BUILD_DIR:-$root/build}"
 
 bash "$root/scripts/install_dependencies.sh"
 bash "$root/scripts/build.sh" -DSSMD_BUILD_TESTS=ON -DSSMD_BUILD_EXAMPLES=ON
+bash "$root/scripts/fetch_sample_meshes.sh"   # the examples run on a sample mesh
 cd "$build"
 ctest --output-on-failure --timeout 900 -j "${SSMD_JOBS:-$(nproc)}"
