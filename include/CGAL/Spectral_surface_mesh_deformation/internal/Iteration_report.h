@@ -29,6 +29,22 @@ struct Iteration_report
     message = why;
     return *this;
   }
+
+  /// Records the relative step of solve number `iteration` (from 0) and tells
+  /// whether to stop: converged (step below `tolerance`), or diverging (a
+  /// step above half the scale after the third solve; `success` is then false).
+  bool stop_after(int iteration, double step, double tolerance)
+  {
+    iterations = iteration;
+    last_step = step;
+    if(iteration > 2 && step > 0.5)
+    {
+      failed("the iteration diverges");
+      return true;
+    }
+    converged = (step < tolerance);
+    return converged;
+  }
 };
 
 } // namespace internal

@@ -139,13 +139,10 @@ public:
         return report.failed("the iteration produced non-finite positions");
       const double step = (next - current).norm() / scale;
       current.swap(next);
-      report.iterations = iteration;
-      report.last_step = step;
-      if(iteration > 2 && step > 0.5)
-        return report.failed("the iteration diverges");
-      if(step < tolerance)
+      if(report.stop_after(iteration, step, tolerance))
       {
-        report.converged = true;
+        if(!report.success)
+          return report;
         break;
       }
     }

@@ -119,13 +119,10 @@ public:
         return report.failed("the iteration produced non-finite values");
       const double step = (next - current).norm() / m_scale;
       current = next;
-      report.iterations = iteration;
-      report.last_step = step;
-      if(iteration > 2 && step > 0.5)
-        return report.failed("the iteration diverges");
-      if(step < tolerance)
+      if(report.stop_after(iteration, step, tolerance))
       {
-        report.converged = true;
+        if(!report.success)
+          return report;
         break;
       }
       if(iteration < max_iterations)
