@@ -8,7 +8,7 @@ packages=(
   build-essential cmake
   libcgal-dev libeigen3-dev libboost-dev libspectra-dev libsuitesparse-dev catch2
   libcgal-demo doxygen
-  f3d xvfb xauth python3-pil fonts-dejavu-core
+  f3d xvfb xauth python3-pil python3-matplotlib fonts-dejavu-core
 )
 
 missing=()
