@@ -14,7 +14,9 @@
 #include <Spectra/SymGEigsShiftSolver.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <exception>
+#include <functional>
 #include <string>
 
 namespace CGAL {
@@ -23,15 +25,17 @@ namespace internal {
 
 // y = (Q - sigma M)^{-1} x, with the factorization done by a sparse SPD
 // solver traits. Spectra's own SymShiftInvert uses a sparse LU, which is
-// far slower on these systems.
+// far slower on these systems. `after_solve`, when set, is called after
+// every solve (the Lanczos iteration cannot be observed otherwise).
 template <class SparseSPDSolverTraits>
 class Shift_invert_operator
 {
 public:
   typedef double Scalar;
 
-  Shift_invert_operator(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass)
-    : m_stiffness(stiffness), m_mass(mass)
+  Shift_invert_operator(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
+                        const std::function<void()>* after_solve = nullptr)
+    : m_stiffness(stiffness), m_mass(mass), m_after_solve(after_solve)
   {}
 
   Eigen::Index rows() const { return m_stiffness.rows(); }
@@ -52,11 +56,14 @@ public:
     if(!m_solver.solve(m_rhs, m_solution))
       throw std::runtime_error("a shift-invert solve failed");
     Eigen::Map<Eigen::VectorXd>(y_out, rows()) = m_solution.col(0);
+    if(m_after_solve != nullptr)
+      (*m_after_solve)();
   }
 
 private:
   const Eigen::SparseMatrix<double>& m_stiffness;
   const Eigen::VectorXd& m_mass;
+  const std::function<void()>* m_after_solve;
   SparseSPDSolverTraits m_solver;
   mutable Eigen::MatrixXd m_rhs, m_solution;
 };
@@ -97,12 +104,41 @@ private:
 /// for nearly all eigenpairs are solved with a dense solver instead, which is
 /// exact and faster at that size.
 ///
+/// An optional progress callback (`set_progress_callback()`) lets a program
+/// show the progress of a long eigensolve; it does not change the result.
+///
 /// \tparam SparseSPDSolverTraits a model of `SparseSPDSolverTraits`, used to
 ///         factor `Q - sigma M`.
 template <class SparseSPDSolverTraits = Default_sparse_spd_solver_traits>
 class Spectra_eigensolver_traits
 {
 public:
+  /// The state of a running `compute()`, passed to the progress callback.
+  ///
+  /// The number of solves needed by the Lanczos iteration is not known in
+  /// advance: it is `subspace_dimension` for the first Lanczos factorization,
+  /// then at most `subspace_dimension - number_of_eigenpairs` per restart
+  /// until the eigenpairs converge. A caller can estimate the remaining time
+  /// from `solves` and the time per solve.
+  struct Progress
+  {
+    /// The stages of `compute()`, in this order.
+    enum Stage {
+      FACTORIZATION, ///< the shifted matrix `Q - sigma M` is being factored
+      ITERATION,     ///< the Lanczos iteration runs; reported after every solve
+      DENSE_SOLVE,   ///< a small problem is solved with the dense solver (no intermediate report)
+      FINISHED       ///< `compute()` is about to return, successfully or not
+    };
+    Stage stage = FACTORIZATION;           ///< the current stage
+    std::size_t solves = 0;                ///< solves with the factored shifted matrix so far
+    std::size_t subspace_dimension = 0;    ///< dimension of the Lanczos subspace (0 for the dense solver)
+    std::size_t number_of_eigenpairs = 0;  ///< the `m` of the call
+    std::size_t number_of_vertices = 0;    ///< the `n` of the call
+  };
+
+  /// The type of the progress callback.
+  typedef std::function<void(const Progress&)> Progress_callback;
+
   /// Creates a solver with a cap on Lanczos restarts, a relative tolerance on
   /// the Ritz values, and the size at or below which the dense solver is used.
   explicit Spectra_eigensolver_traits(int max_iterations = 1000, double tolerance = 1e-10,
@@ -112,6 +148,12 @@ public:
 
   /// The size at or below which the dense solver is used.
   Eigen::Index dense_threshold() const { return m_dense_threshold; }
+
+  /// Sets a function that `compute()` calls at the start of every stage
+  /// (see `Progress`), after every solve of the Lanczos iteration and once
+  /// before it returns. An empty function (the default) disables the
+  /// reports. The callback must not throw; it is copied with the traits.
+  void set_progress_callback(const Progress_callback& callback) { m_progress_callback = callback; }
 
   /// Computes the `m` smallest eigenpairs of `Q h = lambda M h` with
   /// `M = diag(mass)`: `eigenvalues` ascending, `eigenvectors` (n×m)
@@ -125,32 +167,57 @@ public:
     if(m < 1 || m > n)
       return fail("the number of eigenpairs must be between 1 and the number of vertices");
     const Eigen::Index ncv = (std::min)(n, (std::max)(2 * m + 1, m + 20));
+    Progress progress;
+    progress.number_of_eigenpairs = static_cast<std::size_t>(m);
+    progress.number_of_vertices = static_cast<std::size_t>(n);
     if(n <= m_dense_threshold || ncv >= n)
-      return compute_dense(stiffness, mass, m, eigenvalues, eigenvectors);
+    {
+      report(progress, Progress::DENSE_SOLVE);
+      const bool success = compute_dense(stiffness, mass, m, eigenvalues, eigenvectors);
+      report(progress, Progress::FINISHED);
+      return success;
+    }
 
     typedef Spectral_deformation::internal::Shift_invert_operator<SparseSPDSolverTraits> Op;
     typedef Spectral_deformation::internal::Diagonal_mass_operator Mass_op;
+    progress.subspace_dimension = static_cast<std::size_t>(ncv);
+    // Without a callback the operator gets no hook at all.
+    std::function<void()> after_solve;
+    if(m_progress_callback)
+      after_solve = [this, &progress]() {
+        ++progress.solves;
+        m_progress_callback(progress);
+      };
+    report(progress, Progress::FACTORIZATION);
+    bool success = true;
     try
     {
-      Op op(stiffness, mass);
+      Op op(stiffness, mass, m_progress_callback ? &after_solve : nullptr);
       Mass_op mass_op(mass);
       const double sigma = -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
       Spectra::SymGEigsShiftSolver<Op, Mass_op, Spectra::GEigsMode::ShiftInvert> solver(
           op, mass_op, m, ncv, sigma);
+      // The factorization happens in the constructor of the solver; the
+      // first solve is the one of init().
+      progress.stage = Progress::ITERATION;
       solver.init();
       solver.compute(Spectra::SortRule::LargestMagn, m_max_iterations, m_tolerance,
                      Spectra::SortRule::SmallestAlge);
       if(solver.info() != Spectra::CompInfo::Successful)
-        return fail("the Lanczos iteration did not converge within " +
-                    std::to_string(m_max_iterations) + " restarts");
-      eigenvalues = solver.eigenvalues();
-      eigenvectors = solver.eigenvectors();
+        success = fail("the Lanczos iteration did not converge within " +
+                       std::to_string(m_max_iterations) + " restarts");
+      else
+      {
+        eigenvalues = solver.eigenvalues();
+        eigenvectors = solver.eigenvectors();
+      }
     }
     catch(const std::exception& e)
     {
-      return fail(e.what());
+      success = fail(e.what());
     }
-    return true;
+    report(progress, Progress::FINISHED);
+    return success;
   }
 
   /// The reason of the last failure of `compute()`.
@@ -179,10 +246,18 @@ private:
     return false;
   }
 
+  void report(Progress& progress, typename Progress::Stage stage) const
+  {
+    progress.stage = stage;
+    if(m_progress_callback)
+      m_progress_callback(progress);
+  }
+
   int m_max_iterations;
   double m_tolerance;
   Eigen::Index m_dense_threshold;
   std::string m_error_message;
+  Progress_callback m_progress_callback;
 };
 
 } // namespace CGAL

@@ -1,0 +1,601 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// ssmd_deform: deforms a triangle mesh given constraints in a .sel/.def pair
+// or in a plain-text constraint file, with a cached manifold harmonics basis.
+// `ssmd_deform --help` and doc/command_line_tool.md describe the options and
+// the formats.
+
+#include "ssmd_deform/Basis_progress_bar.h"
+#include "ssmd_deform/Command_line_options.h"
+#include "ssmd_deform/Deformation_constraints.h"
+#include "ssmd_deform/Rendering.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spectral_surface_mesh_deformation.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <new>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef Mesh::Vertex_index Vertex_index;
+typedef CGAL::Spectra_eigensolver_traits<> Eigensolver_traits;
+typedef Deformation_tool::Basis_progress_bar<Eigensolver_traits::Progress> Progress_bar;
+
+const char* const program_name = "ssmd_deform";
+const char* const program_version = "0.1.0";
+
+/// A failure of the run (exit status 1); the message says what and where.
+class Tool_error : public std::runtime_error
+{
+public:
+  explicit Tool_error(const std::string& what) : std::runtime_error(what) {}
+};
+
+typedef std::chrono::steady_clock Clock;
+
+double seconds_since(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string lowercase_extension(const std::filesystem::path& file)
+{
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+// The formats CGAL::IO::write_polygon_mesh writes without optional libraries.
+bool is_writable_format(const std::string& extension)
+{
+  return extension == ".off" || extension == ".obj" || extension == ".ply" ||
+         extension == ".stl" || extension == ".ts";
+}
+
+std::string default_output_file(const std::string& mesh_file)
+{
+  const std::filesystem::path mesh(mesh_file);
+  const std::string extension = is_writable_format(lowercase_extension(mesh))
+                                    ? mesh.extension().string()
+                                    : std::string(".off");
+  return (mesh.parent_path() / (mesh.stem().string() + "_deformed" + extension)).string();
+}
+
+// Writes `mesh` to `file` through a temporary file in the same directory,
+// renamed at the end, so that `file` is either complete or untouched.
+void write_mesh_atomically(const Mesh& mesh, const std::string& file)
+{
+  const std::filesystem::path target(file);
+  const std::filesystem::path temporary =
+      target.parent_path() / ("." + target.stem().string() + ".partial-" +
+                              std::to_string(::getpid()) + target.extension().string());
+  bool written = false;
+  try
+  {
+    written = CGAL::IO::write_polygon_mesh(temporary.string(), mesh,
+                                           CGAL::parameters::stream_precision(17));
+  }
+  catch(const std::exception&)
+  {
+    written = false;
+  }
+  std::error_code error;
+  if(written)
+    std::filesystem::rename(temporary, target, error);
+  if(!written || error)
+  {
+    std::filesystem::remove(temporary, error);
+    throw Tool_error("cannot write the result to " + file);
+  }
+}
+
+// Writes the basis cache through a temporary file (a run interrupted while
+// writing must not leave a truncated cache). Returns an empty string on
+// success, the reason otherwise.
+template <class Deformation>
+std::string save_basis_cache(const Deformation& deformation, const std::string& file)
+{
+  const std::string temporary = file + ".partial-" + std::to_string(::getpid());
+  try
+  {
+    {
+      std::ofstream out(temporary, std::ios::binary);
+      if(!out)
+        return "cannot create " + temporary;
+      deformation.save_basis(out);
+      out.close();
+      if(!out)
+        throw CGAL::Spectral_deformation_error(CGAL::Spectral_deformation_error::IO_ERROR,
+                                               "write error");
+    }
+    std::filesystem::rename(temporary, file);
+    return std::string();
+  }
+  catch(const std::exception& e)
+  {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    return e.what();
+  }
+}
+
+Mesh read_triangle_mesh(const std::string& file)
+{
+  std::error_code error;
+  if(!std::filesystem::exists(file, error))
+    throw Tool_error("cannot read the mesh " + file + ": no such file");
+  if(std::filesystem::is_directory(file, error))
+    throw Tool_error("cannot read the mesh " + file + ": it is a directory");
+  if(!std::ifstream(file))
+    throw Tool_error("cannot read the mesh " + file + ": the file cannot be opened");
+  Mesh mesh;
+  bool read = false;
+  try
+  {
+    read = CGAL::IO::read_polygon_mesh(file, mesh, CGAL::parameters::verbose(false));
+  }
+  catch(const std::exception&)
+  {
+    read = false;
+  }
+  if(!read)
+    throw Tool_error("cannot read a polygon mesh from " + file +
+                     " (unsupported extension, malformed or truncated file, or polygons that "
+                     "do not form a manifold mesh)");
+  if(mesh.number_of_faces() == 0)
+    throw Tool_error("the mesh " + file + " has no face");
+  if(!CGAL::is_triangle_mesh(mesh))
+  {
+    std::size_t polygons = 0;
+    for(Mesh::Face_index f : mesh.faces())
+      polygons += (mesh.degree(f) != 3);
+    throw Tool_error("the mesh " + file + " is not a triangle mesh: " + std::to_string(polygons) +
+                     " of its " + std::to_string(mesh.number_of_faces()) +
+                     " faces are not triangles (triangulate it first, e.g. with "
+                     "CGAL::Polygon_mesh_processing::triangulate_faces())");
+  }
+  for(Vertex_index v : mesh.vertices())
+  {
+    const Point& p = mesh.point(v);
+    if(!(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z())))
+      throw Tool_error("the mesh " + file + " has a non-finite coordinate (vertex " +
+                       std::to_string(v.idx()) + ")");
+  }
+  return mesh;
+}
+
+// What the report prints at the end.
+struct Run_report
+{
+  double read_mesh_seconds = 0;
+  double read_constraints_seconds = 0;
+  double cache_seconds = 0;
+  double write_seconds = 0;
+  double render_seconds = 0;
+  std::string basis_origin;
+  std::size_t eigensolver_solves = 0;
+  bool dense_eigensolve = false;
+  CGAL::Spectral_preprocess_report preprocess;
+  CGAL::Spectral_deformation_report deform;
+  double max_handle_residual = 0; // relative to the bounding-box diagonal of the mesh
+};
+
+class Run
+{
+public:
+  explicit Run(const Deformation_tool::Command_line_options& options)
+    : m_options(options), m_info(options.quiet ? nullptr : std::cout.rdbuf())
+  {}
+
+  int execute()
+  {
+    const std::string output_file =
+        m_options.output_file.empty() ? default_output_file(m_options.mesh_file) : m_options.output_file;
+    check_output(output_file);
+    if(m_options.render)
+    {
+      try
+      {
+        Deformation_tool::check_renderer_available();
+      }
+      catch(const Deformation_tool::Rendering_error& e)
+      {
+        throw Tool_error(e.what());
+      }
+    }
+
+    Clock::time_point start = Clock::now();
+    Mesh mesh = read_triangle_mesh(m_options.mesh_file);
+    m_report.read_mesh_seconds = seconds_since(start);
+    m_info << m_options.mesh_file << ": " << mesh.number_of_vertices() << " vertices, "
+           << mesh.number_of_faces() << " triangles\n";
+
+    std::vector<Eigen::Vector3d> rest(mesh.number_of_vertices());
+    for(Vertex_index v : mesh.vertices())
+      rest[v.idx()] = Eigen::Vector3d(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z());
+
+    start = Clock::now();
+    Deformation_tool::Deformation_constraints constraints;
+    try
+    {
+      constraints = m_options.constraint_file.empty()
+                        ? Deformation_tool::read_selection_files(m_options.selection_file,
+                                                                 m_options.transformation_file, rest)
+                        : Deformation_tool::read_constraint_file(m_options.constraint_file, rest);
+    }
+    catch(const Deformation_tool::Constraint_error& e)
+    {
+      throw Tool_error(e.what());
+    }
+    m_report.read_constraints_seconds = seconds_since(start);
+    m_info << "constraints: " << constraints.number_of_roi_vertices()
+           << " vertices in the region of interest, " << constraints.number_of_handle_vertices()
+           << " handle vertices\n";
+
+    switch(m_options.algorithm)
+    {
+    case Deformation_tool::Algorithm::SPECTRAL:
+      deform<CGAL::SPECTRAL_DUAL_LAPLACIAN>(mesh, constraints);
+      break;
+    case Deformation_tool::Algorithm::LINEAR:
+      deform<CGAL::SPECTRAL_LINEAR>(mesh, constraints);
+      break;
+    case Deformation_tool::Algorithm::SPATIAL:
+      deform<CGAL::SPATIAL_DUAL_LAPLACIAN>(mesh, constraints);
+      break;
+    }
+
+    // The largest distance of a handle vertex to its target, relative to the
+    // bounding box of the whole mesh (the deformation's own report measures
+    // it against the region).
+    Eigen::Vector3d low = rest.front(), high = rest.front();
+    for(const Eigen::Vector3d& p : rest)
+    {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    const double diagonal = (high - low).norm() > 0 ? (high - low).norm() : 1.0;
+    for(Vertex_index v : mesh.vertices())
+      if(constraints.is_handle[v.idx()])
+      {
+        const Point& p = mesh.point(v);
+        const double distance = (Eigen::Vector3d(p.x(), p.y(), p.z()) - constraints.targets[v.idx()]).norm();
+        m_report.max_handle_residual = std::max(m_report.max_handle_residual, distance / diagonal);
+      }
+
+    start = Clock::now();
+    write_mesh_atomically(mesh, output_file);
+    m_report.write_seconds = seconds_since(start);
+
+    if(m_options.render)
+    {
+      start = Clock::now();
+      render(mesh, rest, output_file);
+      m_report.render_seconds = seconds_since(start);
+    }
+    print_report();
+    m_info << "wrote " << output_file << "\n";
+    return EXIT_SUCCESS;
+  }
+
+private:
+  void check_output(const std::string& output_file) const
+  {
+    const std::filesystem::path output(output_file);
+    if(!is_writable_format(lowercase_extension(output)))
+      throw Deformation_tool::Usage_error(
+          "cannot write the format of '" + output_file +
+          "': the output extension must be .off, .obj, .ply, .stl or .ts");
+    const std::filesystem::path directory =
+        output.parent_path().empty() ? std::filesystem::path(".") : output.parent_path();
+    std::error_code error;
+    if(!std::filesystem::is_directory(directory, error))
+      throw Tool_error("cannot write the result to " + output_file + ": the directory " +
+                       directory.string() + " does not exist");
+    if(std::filesystem::is_directory(output, error))
+      throw Tool_error("cannot write the result to " + output_file + ": it is a directory");
+  }
+
+  template <class Deformation>
+  std::unique_ptr<Deformation> make_deformation(Mesh& mesh,
+                                                const Deformation_tool::Deformation_constraints& constraints,
+                                                Progress_bar& progress_bar) const
+  {
+    std::unique_ptr<Deformation> deformation(new Deformation(mesh));
+    deformation->set_number_of_frequencies(m_options.frequencies);
+    deformation->set_iterations(m_options.iterations);
+    deformation->set_tolerance(m_options.tolerance);
+    deformation->set_constraint_weight(m_options.constraint_weight);
+    deformation->set_constraint_policy(m_options.policy == Deformation_tool::Policy::EXACT
+                                           ? CGAL::EXACT_CONSTRAINTS
+                                           : CGAL::SOFT_CONSTRAINTS);
+    Eigensolver_traits eigensolver;
+    eigensolver.set_progress_callback(
+        [&progress_bar](const Eigensolver_traits::Progress& progress) { progress_bar(progress); });
+    deformation->set_eigensolver_traits(eigensolver);
+    for(Vertex_index v : mesh.vertices())
+      if(constraints.in_roi[v.idx()])
+        deformation->insert_roi_vertex(v);
+    for(Vertex_index v : mesh.vertices())
+      if(constraints.is_handle[v.idx()])
+        deformation->insert_control_vertex(v);
+    return deformation;
+  }
+
+  // Reads the cache into `deformation`; a cache that cannot be used is
+  // reported and left to be overwritten.
+  template <class Deformation>
+  bool load_cache(Deformation& deformation, const std::string& cache_file)
+  {
+    std::error_code error;
+    if(!std::filesystem::exists(cache_file, error))
+      return false;
+    const Clock::time_point start = Clock::now();
+    std::ifstream in(cache_file, std::ios::binary);
+    if(!in)
+    {
+      warn("cannot open the basis cache " + cache_file + ": the basis is recomputed");
+      return false;
+    }
+    try
+    {
+      deformation.load_basis(in);
+    }
+    catch(const CGAL::Spectral_deformation_error& e)
+    {
+      warn("the basis cache " + cache_file + " cannot be used (" + e.what() +
+           "): the basis is recomputed and the cache rewritten");
+      return false;
+    }
+    m_report.cache_seconds = seconds_since(start);
+    return true;
+  }
+
+  template <CGAL::Spectral_deformation_algorithm_tag TAG>
+  void deform(Mesh& mesh, const Deformation_tool::Deformation_constraints& constraints)
+  {
+    typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, TAG> Deformation;
+    const bool uses_basis = (TAG != CGAL::SPATIAL_DUAL_LAPLACIAN);
+    const bool interactive = !m_options.quiet && ::isatty(STDERR_FILENO);
+    Progress_bar progress_bar(std::cerr, interactive);
+
+    std::unique_ptr<Deformation> deformation;
+    try
+    {
+      deformation = make_deformation<Deformation>(mesh, constraints, progress_bar);
+    }
+    catch(const CGAL::Spectral_deformation_error& e)
+    {
+      throw Tool_error(std::string("cannot set up the deformation: ") + e.what());
+    }
+
+    const std::string cache_file =
+        m_options.basis_cache_file.empty()
+            ? m_options.mesh_file + ".ssmd-basis-m" + std::to_string(m_options.frequencies)
+            : m_options.basis_cache_file;
+    const bool use_cache = uses_basis && m_options.use_cache;
+    bool loaded = use_cache && load_cache(*deformation, cache_file);
+
+    bool prepared = deformation->preprocess();
+    progress_bar.finish();
+    if(prepared && loaded)
+    {
+      // A cache given by --basis-cache may hold another number of
+      // frequencies, which would prevail: recompute instead.
+      const std::size_t expected = std::min(m_options.frequencies,
+                                            deformation->preprocess_report().number_of_region_vertices);
+      const std::size_t cached = deformation->preprocess_report().number_of_frequencies;
+      if(cached != expected)
+      {
+        warn("the basis cache " + cache_file + " holds " + std::to_string(cached) +
+             " frequencies, " + std::to_string(expected) +
+             " are requested: the basis is recomputed and the cache rewritten");
+        deformation = make_deformation<Deformation>(mesh, constraints, progress_bar);
+        loaded = false;
+        prepared = deformation->preprocess();
+        progress_bar.finish();
+      }
+    }
+    m_report.preprocess = deformation->preprocess_report();
+    if(!prepared)
+      throw Tool_error("cannot prepare the deformation: " + m_report.preprocess.message);
+    m_report.eigensolver_solves = progress_bar.solves();
+    m_report.dense_eigensolve = progress_bar.dense();
+
+    if(!uses_basis)
+      m_report.basis_origin = "not used by the spatial algorithm";
+    else if(loaded)
+      m_report.basis_origin = "loaded from the cache " + cache_file + " (eigensolve skipped)";
+    else
+    {
+      std::ostringstream origin;
+      origin << "computed in " << std::setprecision(3) << m_report.preprocess.basis_seconds << " s ("
+             << (m_report.dense_eigensolve ? std::string("dense solver")
+                                           : std::to_string(m_report.eigensolver_solves) + " Lanczos solves")
+             << ")";
+      if(use_cache)
+      {
+        const std::string failure = save_basis_cache(*deformation, cache_file);
+        if(failure.empty())
+          origin << ", saved to the cache " << cache_file;
+        else
+          warn("cannot write the basis cache " + cache_file + ": " + failure);
+      }
+      m_report.basis_origin = origin.str();
+    }
+    m_info << "basis: " << m_report.basis_origin << "\n";
+
+    try
+    {
+      for(Vertex_index v : mesh.vertices())
+        if(constraints.is_handle[v.idx()])
+        {
+          const Eigen::Vector3d& t = constraints.targets[v.idx()];
+          deformation->set_target_position(v, Point(t[0], t[1], t[2]));
+        }
+    }
+    catch(const CGAL::Spectral_deformation_error& e)
+    {
+      throw Tool_error(std::string("invalid target: ") + e.what());
+    }
+    deformation->deform();
+    m_report.deform = deformation->deform_report();
+    if(!m_report.deform.success)
+      throw Tool_error("the deformation failed: " + m_report.deform.message);
+  }
+
+  void render(const Mesh& mesh, const std::vector<Eigen::Vector3d>& rest, const std::string& output_file)
+  {
+    std::error_code error;
+    const std::filesystem::path directory =
+        std::filesystem::temp_directory_path(error) / ("ssmd_deform-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(directory, error);
+    if(error)
+      throw Tool_error("cannot create the temporary directory " + directory.string());
+    const std::string before_mesh = (directory / "before.ply").string();
+    const std::string after_mesh = (directory / "after.ply").string();
+    Mesh before = mesh;
+    Eigen::Vector3d low = rest.front(), high = rest.front();
+    for(Vertex_index v : before.vertices())
+    {
+      const Eigen::Vector3d& p = rest[v.idx()];
+      before.point(v) = Point(p[0], p[1], p[2]);
+      const Point& q = mesh.point(v);
+      const Eigen::Vector3d deformed(q.x(), q.y(), q.z());
+      low = low.cwiseMin(p).cwiseMin(deformed);
+      high = high.cwiseMax(p).cwiseMax(deformed);
+    }
+    const std::filesystem::path output(output_file);
+    const std::string stem = (output.parent_path() / output.stem()).string();
+    try
+    {
+      if(!CGAL::IO::write_polygon_mesh(before_mesh, before) ||
+         !CGAL::IO::write_polygon_mesh(after_mesh, mesh))
+        throw Tool_error("cannot write the meshes to render into " + directory.string());
+      Deformation_tool::render_before_after(before_mesh, after_mesh, stem + "_before.png",
+                                            stem + "_after.png", low, high,
+                                            (directory / "f3d.log").string());
+    }
+    catch(const Deformation_tool::Rendering_error& e)
+    {
+      std::filesystem::remove_all(directory, error);
+      throw Tool_error(e.what());
+    }
+    catch(...)
+    {
+      std::filesystem::remove_all(directory, error);
+      throw;
+    }
+    std::filesystem::remove_all(directory, error);
+    m_info << "rendered " << stem << "_before.png and " << stem << "_after.png\n";
+  }
+
+  void print_report()
+  {
+    const CGAL::Spectral_preprocess_report& pre = m_report.preprocess;
+    const CGAL::Spectral_deformation_report& def = m_report.deform;
+    auto row = [this](const std::string& phase, double seconds, const std::string& note = std::string()) {
+      m_info << "  " << std::left << std::setw(28) << phase << std::right << std::setw(10)
+             << std::fixed << std::setprecision(3) << seconds << " s";
+      if(!note.empty())
+        m_info << "   " << note;
+      m_info << "\n";
+      m_info.unsetf(std::ios::fixed);
+    };
+    m_info << "timings:\n";
+    row("read mesh", m_report.read_mesh_seconds);
+    row("read constraints", m_report.read_constraints_seconds);
+    if(m_report.cache_seconds > 0)
+      row("read basis cache", m_report.cache_seconds);
+    row("region (basis included)", pre.region_seconds,
+        std::to_string(pre.number_of_region_vertices) + " vertices");
+    if(pre.basis_computed)
+      row("  of which eigensolve", pre.basis_seconds,
+          std::to_string(pre.number_of_frequencies) + " frequencies");
+    row("factorization", pre.factorization_seconds,
+        std::to_string(pre.number_of_constrained_vertices) + " constrained vertices");
+    row("solve", def.solve_seconds, std::to_string(def.iterations) + " iterations");
+    row("detail transfer", def.detail_transfer_seconds);
+    row("write result", m_report.write_seconds);
+    if(m_options.render)
+      row("render", m_report.render_seconds);
+    m_info << "iterations: " << def.iterations << " ("
+           << (def.converged ? "converged" : "stopped at the iteration cap") << ", last relative step "
+           << std::setprecision(3) << def.last_step << ")\n";
+    m_info << "max handle residual: " << std::setprecision(3) << m_report.max_handle_residual
+           << " of the bounding-box diagonal of the mesh\n";
+  }
+
+  void warn(const std::string& message) const
+  {
+    std::cerr << program_name << ": warning: " << message << "\n";
+  }
+
+  const Deformation_tool::Command_line_options& m_options;
+  std::ostream m_info; // standard output, or nothing with --quiet
+  Run_report m_report;
+};
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const std::string hint = std::string("Try '") + program_name + " --help' for more information.\n";
+  try
+  {
+    const Deformation_tool::Command_line_options options =
+        Deformation_tool::parse_command_line(argc, argv);
+    if(options.help)
+    {
+      std::cout << Deformation_tool::help_text();
+      return EXIT_SUCCESS;
+    }
+    if(options.version)
+    {
+      std::cout << program_name << " " << program_version << "\n";
+      return EXIT_SUCCESS;
+    }
+    Run run(options);
+    return run.execute();
+  }
+  catch(const Deformation_tool::Usage_error& e)
+  {
+    std::cerr << program_name << ": error: " << e.what() << "\n" << hint;
+    return 2;
+  }
+  catch(const Tool_error& e)
+  {
+    std::cerr << program_name << ": error: " << e.what() << "\n";
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << program_name << ": error: out of memory\n";
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << program_name << ": error: " << e.what() << "\n";
+  }
+  return EXIT_FAILURE;
+}
