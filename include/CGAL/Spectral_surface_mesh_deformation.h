@@ -332,7 +332,7 @@ public:
   /// (which changes the region). Its target is its current position. Returns
   /// `true` if `vd` was not a control vertex.
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `vd` is not
-  ///         a vertex of the mesh (null, or an index out of range).
+  ///         a vertex of the mesh (null, removed, or an index out of range).
   bool insert_control_vertex(vertex_descriptor vd)
   {
     if(is_control_vertex(vd))
@@ -377,7 +377,7 @@ public:
   /// Inserts `vd` in the ROI. Returns `true` if it was not in it; the region
   /// is then rebuilt, basis included, by the next `preprocess()`.
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `vd` is not
-  ///         a vertex of the mesh (null, or an index out of range).
+  ///         a vertex of the mesh (null, removed, or an index out of range).
   bool insert_roi_vertex(vertex_descriptor vd)
   {
     if(is_roi_vertex(vd))
@@ -795,6 +795,7 @@ private:
       m_original[i] = get(m_vpm, vd);
     }
     m_target = m_original;
+    m_is_vertex.swap(seen); // removed, not collected, vertices are not vertices
   }
 
   // The index of `vd`, or an exception when `vd` is not a vertex of the mesh
@@ -808,7 +809,8 @@ private:
 
   bool has_index(vertex_descriptor vd) const
   {
-    return vd != boost::graph_traits<TM>::null_vertex() && id(vd) < m_is_roi.size();
+    return vd != boost::graph_traits<TM>::null_vertex() && id(vd) < m_is_roi.size() &&
+           m_is_vertex[id(vd)] != 0;
   }
 
   std::size_t id(vertex_descriptor vd) const { return static_cast<std::size_t>(get(m_vim, vd)); }
@@ -1205,6 +1207,7 @@ private:
   Roi_vertex_range m_roi;
   std::vector<char> m_is_roi;
   std::vector<char> m_is_control;
+  std::vector<char> m_is_vertex;
   std::vector<vertex_descriptor> m_previous_region_vertices;
 
   unsigned int m_iterations = 10;

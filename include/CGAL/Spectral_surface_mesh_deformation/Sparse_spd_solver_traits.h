@@ -42,6 +42,15 @@ public:
   /// `A` is not positive definite.
   bool factor(const Matrix& A)
   {
+    m_empty = (A.rows() == 0);
+    if(A.nonZeros() == 0)
+    {
+      // A zero matrix is not positive definite, and an empty one needs no
+      // factorization. (CHOLMOD's analysis refuses a matrix without values,
+      // and Eigen's wrapper then dereferences the missing factor.)
+      m_factored = m_empty;
+      return m_factored;
+    }
     m_solver.compute(A);
     m_factored = (m_solver.info() == Eigen::Success);
     return m_factored;
@@ -53,6 +62,11 @@ public:
   {
     if(!m_factored)
       return false;
+    if(m_empty)
+    {
+      X.resize(0, B.cols());
+      return B.rows() == 0;
+    }
     X = m_solver.solve(B);
     return m_solver.info() == Eigen::Success && X.allFinite();
   }
@@ -60,6 +74,7 @@ public:
 private:
   EigenSolver m_solver;
   bool m_factored = false;
+  bool m_empty = false;
 };
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationTraits

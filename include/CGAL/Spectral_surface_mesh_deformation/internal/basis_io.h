@@ -17,6 +17,7 @@
 #include <istream>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Spectral_deformation {
@@ -84,6 +85,28 @@ inline void write_basis(std::ostream& os, const Basis_data& data)
                                      "save: writing the basis failed");
 }
 
+/// The number of bytes left in `is`, or -1 when the stream cannot tell
+/// (a pipe, for instance). The position and state of `is` are kept.
+inline std::streamoff remaining_bytes(std::istream& is)
+{
+  const std::istream::pos_type here = is.tellg();
+  if(here == std::istream::pos_type(-1))
+  {
+    is.clear();
+    return -1;
+  }
+  is.seekg(0, std::ios::end);
+  const std::istream::pos_type end = is.tellg();
+  is.clear();
+  is.seekg(here);
+  if(end == std::istream::pos_type(-1) || !is)
+  {
+    is.clear();
+    return -1;
+  }
+  return static_cast<std::streamoff>(end - here);
+}
+
 /// Reads what `write_basis()` wrote. Throws IO_ERROR for a stream that is
 /// not a basis, truncated, corrupted, or holds non-finite values.
 inline Basis_data read_basis(std::istream& is, std::uint64_t max_vertices = (std::uint64_t(1) << 31))
@@ -114,12 +137,44 @@ inline Basis_data read_basis(std::istream& is, std::uint64_t max_vertices = (std
   // terabytes.
   if(n == 0 || n > max_vertices || m < 1 || m > n || n * m > (std::uint64_t(1) << 34))
     throw Error(Error::IO_ERROR, "load: corrupted header (sizes out of range)");
-  data.eigenvalues.resize(static_cast<Eigen::Index>(m));
-  data.mass.resize(static_cast<Eigen::Index>(n));
-  data.basis.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
-  read(data.eigenvalues.data(), sizeof(double) * m);
-  read(data.mass.data(), sizeof(double) * n);
-  read(data.basis.data(), sizeof(double) * n * m);
+  // Never allocate more than the stream holds: a header that claims huge
+  // sizes must fail as a truncated file, not exhaust the memory. The size of
+  // a stream that can tell it is checked first; another stream is read in
+  // chunks that grow with what actually arrives.
+  const std::uint64_t payload = sizeof(double) * (m + n + n * m) + sizeof(std::uint64_t);
+  const std::streamoff left = remaining_bytes(is);
+  if(left >= 0 && static_cast<std::uint64_t>(left) < payload)
+    throw Error(Error::IO_ERROR, "load: the basis file is truncated or unreadable");
+  if(left >= 0)
+  {
+    data.eigenvalues.resize(static_cast<Eigen::Index>(m));
+    data.mass.resize(static_cast<Eigen::Index>(n));
+    data.basis.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
+    read(data.eigenvalues.data(), sizeof(double) * m);
+    read(data.mass.data(), sizeof(double) * n);
+    read(data.basis.data(), sizeof(double) * n * m);
+  }
+  else
+  {
+    auto read_chunked = [&](std::uint64_t count) {
+      const std::uint64_t chunk = std::uint64_t(1) << 17; // doubles
+      std::vector<double> values;
+      while(values.size() < count)
+      {
+        const std::size_t done = values.size();
+        values.resize(done + static_cast<std::size_t>((std::min)(count - done, chunk)));
+        read(values.data() + done, sizeof(double) * (values.size() - done));
+      }
+      return values;
+    };
+    const std::vector<double> eigenvalues = read_chunked(m);
+    const std::vector<double> mass = read_chunked(n);
+    const std::vector<double> basis = read_chunked(n * m);
+    data.eigenvalues = Eigen::Map<const Eigen::VectorXd>(eigenvalues.data(), static_cast<Eigen::Index>(m));
+    data.mass = Eigen::Map<const Eigen::VectorXd>(mass.data(), static_cast<Eigen::Index>(n));
+    data.basis = Eigen::Map<const Eigen::MatrixXd>(basis.data(), static_cast<Eigen::Index>(n),
+                                                   static_cast<Eigen::Index>(m));
+  }
   const std::uint64_t computed = sum.value();
   std::uint64_t stored = 0;
   is.read(reinterpret_cast<char*>(&stored), sizeof(stored));
