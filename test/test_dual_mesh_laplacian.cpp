@@ -1,6 +1,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Dual_mesh_laplacian.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Basis_panels.h>
 
 #include <catch2/catch.hpp>
 
@@ -18,6 +19,16 @@ Positions rigidly_moved(const Positions& x, double scale)
   const Eigen::Matrix3d R =
       Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
   return ((scale * x * R.transpose()).rowwise() + Eigen::RowVector3d(4.0, -2.0, 7.5)).eval();
+}
+
+/// The triangles of a soup as the internal arrays.
+CGAL::Spectral_deformation::internal::Triangles dual_triangles(const Soup& soup)
+{
+  CGAL::Spectral_deformation::internal::Triangles triangles(static_cast<Eigen::Index>(soup.triangles.size()), 3);
+  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+      triangles(static_cast<Eigen::Index>(f), k) = static_cast<int>(soup.triangles[f][static_cast<std::size_t>(k)]);
+  return triangles;
 }
 
 } // namespace
@@ -158,4 +169,43 @@ TEST_CASE("non-manifold and inconsistently oriented faces are refused", "[dual][
              c = quad.add_vertex(Point(1, 1, 0)), d = quad.add_vertex(Point(0, 1, 0));
   quad.add_face(a, b, c, d);
   CHECK_THROWS_AS(Dual(quad), Error);
+}
+
+TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's products", "[dual]")
+{
+  using namespace CGAL::Spectral_deformation::internal;
+  // A plane with an open border: rows only where a face has three neighbours.
+  const Soup soup = bumpy_plane(12);
+  const Dual_mesh_operator op(dual_triangles(soup), static_cast<Eigen::Index>(soup.points.size()));
+  Positions rest_positions(static_cast<Eigen::Index>(soup.points.size()), 3);
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    rest_positions.row(static_cast<Eigen::Index>(i)) << soup.points[i].x(), soup.points[i].y(), soup.points[i].z();
+  const Dual_coordinates rest = op.evaluate(rest_positions);
+  const Positions moved = rigidly_moved(rest_positions, 1.7);
+  const Dual_coordinates reference = op.evaluate(moved);
+  REQUIRE(op.number_of_rows() > 0);
+  REQUIRE(op.number_of_rows() < op.number_of_faces());
+
+  Positions centroids, normals = rest.normals;
+  op.update_normals(moved, centroids, normals);
+  CHECK((normals - reference.normals).cwiseAbs().maxCoeff() < 1e-14);
+
+  const Eigen::VectorXd factors = -rest.heights;
+  const Eigen::SparseMatrix<double> LF = op.laplacian_operator(rest.weights);
+  const Positions expected = LF.transpose() * (factors.asDiagonal() * normals);
+  Positions faces, spread;
+  op.apply_transpose(rest.weights, factors, normals, faces, spread);
+  CHECK((spread - expected).cwiseAbs().maxCoeff() < 1e-14 * (1.0 + expected.cwiseAbs().maxCoeff()));
+
+  // Several panels and a partial last one.
+  const Eigen::MatrixXd H = Eigen::MatrixXd::Random(3 * Basis_panels<double>::panel_rows + 17, 23);
+  const Eigen::MatrixXd C = Eigen::MatrixXd::Random(23, 3);
+  const Positions X = Positions::Random(H.rows(), 3);
+  const Basis_panels<double> panels(H);
+  Positions shape;
+  Eigen::MatrixXd projected;
+  panels.multiply(C, shape);
+  panels.multiply_transpose(X, projected);
+  CHECK((shape - H * C).cwiseAbs().maxCoeff() < 1e-13);
+  CHECK((projected - H.transpose() * X).cwiseAbs().maxCoeff() < 1e-12);
 }

@@ -1124,7 +1124,7 @@ private:
     m_deform_report.solve_seconds = seconds_since(start);
 
     const auto transfer_start = std::chrono::steady_clock::now();
-    const Positions smooth_deformed = region.basis.basis * coefficients;
+    const Positions smooth_deformed = region.spectral.shape(coefficients);
     bool transferred = false;
     if(m_policy == EXACT_CONSTRAINTS)
     {

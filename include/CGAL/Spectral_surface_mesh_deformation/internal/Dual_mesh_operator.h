@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -141,6 +142,66 @@ public:
       result.coordinates.row(r) = l.transpose();
     }
     return result;
+  }
+
+  /// The unit normals of the neighbour planes at `positions` (the `normals`
+  /// of `evaluate()`), for the iterations: `normals` holds the previous
+  /// normals on entry, kept for the rows whose neighbour triangle is
+  /// degenerate, and the new ones on exit. `centroids` is a workspace.
+  void update_normals(const Positions& positions, Positions& centroids, Positions& normals) const
+  {
+    const Eigen::Index f_count = number_of_faces();
+    centroids.resize(f_count, 3);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) if(f_count > 20000)
+#endif
+    for(Eigen::Index f = 0; f < f_count; ++f)
+      centroids.row(f) = (positions.row(m_triangles(f, 0)) + positions.row(m_triangles(f, 1)) +
+                          positions.row(m_triangles(f, 2))) / 3.0;
+    const Eigen::Index rows = number_of_rows();
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) if(rows > 20000)
+#endif
+    for(Eigen::Index r = 0; r < rows; ++r)
+    {
+      const int f = m_row_faces[static_cast<std::size_t>(r)];
+      const Eigen::Vector3d q0 = centroids.row(m_neighbours(f, 0)).transpose();
+      const Eigen::Vector3d e1 = centroids.row(m_neighbours(f, 1)).transpose() - q0;
+      const Eigen::Vector3d e2 = centroids.row(m_neighbours(f, 2)).transpose() - q0;
+      const Eigen::Vector3d normal = e1.cross(e2);
+      const double squared_norm = normal.squaredNorm();
+      const double scale = (std::max)({e1.squaredNorm(), (e2 - e1).squaredNorm(), e2.squaredNorm()});
+      // The same test as evaluate(): a degenerate row keeps its normal.
+      if(squared_norm > 1e-24 * scale * scale && squared_norm > 0)
+        normals.row(r) = normal.transpose() / std::sqrt(squared_norm);
+    }
+  }
+
+  /// `result` = (L̂F)ᵀ Y (n×3) for the operator of `laplacian_operator(weights)`
+  /// and the rows y_r = `factors`[r] `directions`.row(r), without forming the
+  /// operator: L̂F = L̂ F, so the rows are first gathered on the faces (L̂ᵀ,
+  /// four updates per row), then spread on their vertices (Fᵀ). `faces` is a
+  /// workspace.
+  void apply_transpose(const Eigen::Matrix<double, Eigen::Dynamic, 3>& weights,
+                       const Eigen::VectorXd& factors, const Positions& directions, Positions& faces,
+                       Positions& result) const
+  {
+    faces.setZero(number_of_faces(), 3);
+    for(Eigen::Index r = 0; r < number_of_rows(); ++r)
+    {
+      const int f = m_row_faces[static_cast<std::size_t>(r)];
+      const Eigen::RowVector3d y = factors[r] * directions.row(r);
+      faces.row(f) -= y;
+      for(int j = 0; j < 3; ++j)
+        faces.row(m_neighbours(f, j)) += weights(r, j) * y;
+    }
+    result.setZero(m_number_of_vertices, 3);
+    for(Eigen::Index f = 0; f < number_of_faces(); ++f)
+    {
+      const Eigen::RowVector3d third = faces.row(f) / 3.0;
+      for(int k = 0; k < 3; ++k)
+        result.row(m_triangles(f, k)) += third;
+    }
   }
 
   /// The sparse operator L̂F (rows × n): row r maps vertex positions to the
