@@ -22,6 +22,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 
@@ -225,6 +226,13 @@ Mesh make_mesh(FuzzedDataProvider& in)
 
 // ---------------------------------------------------------------------------
 // The API sequence.
+
+// SSMD_FUZZ_TRACE=1 prints every call, to replay a finding.
+bool trace()
+{
+  static const bool enabled = std::getenv("SSMD_FUZZ_TRACE") != nullptr;
+  return enabled;
+}
 
 template <CGAL::Spectral_deformation_algorithm_tag TAG>
 class Session
@@ -442,6 +450,9 @@ private:
       violation("call " + std::to_string(op) + ": undocumented exception");
     }
     const std::vector<Point> after = positions(m_mesh);
+    if(trace())
+      std::fprintf(stderr, "call %d%s; preprocess: %s; deform: %s\n", op, threw ? " threw" : "",
+                   d.preprocess_report().message.c_str(), d.deform_report().message.c_str());
     if(threw)
       require(same_positions(before, after), "call " + std::to_string(op) + " threw and changed the mesh");
 
@@ -474,6 +485,10 @@ private:
     {
       if(same_point(before[i], after[i]))
         continue;
+      if(trace())
+        std::fprintf(stderr, "  vertex %zu: (%g %g %g) -> (%g %g %g), initial (%g %g %g), in the ROI %d\n", i,
+                     before[i].x(), before[i].y(), before[i].z(), after[i].x(), after[i].y(), after[i].z(),
+                     m_original[i].x(), m_original[i].y(), m_original[i].z(), int(in_roi[i]));
       require(writes, "call " + std::to_string(op) + " moved a vertex");
       const bool back_to_initial = same_point(after[i], m_original[i]);
       if(op == 11)
