@@ -244,6 +244,8 @@ private:
     std::vector<char> is_fixed;              // local: in the region, outside the ROI
     Triangle_arrays arrays;
     double diagonal = 0;
+    std::vector<int> component; // local index -> connected component
+    int number_of_components = 0;
     Spectral_deformation::internal::Basis_data basis;
     Spectral_deformation::internal::Spectral_dual_laplacian_solver spectral;
     Spectral_deformation::internal::Detail_transfer<Sparse_solver_traits> detail;
@@ -899,6 +901,8 @@ private:
       for(int k = 0; k < 3; ++k)
         region->arrays.triangles(static_cast<Eigen::Index>(f), k) = region->local[faces_of_region[f][k]];
     Spectral_deformation::internal::validate_triangle_arrays(region->arrays);
+    region->component = Spectral_deformation::internal::connected_components(
+        region->arrays.triangles, region->arrays.number_of_vertices(), region->number_of_components);
     region->diagonal = (region->arrays.positions.colwise().maxCoeff() -
                         region->arrays.positions.colwise().minCoeff())
                            .norm();
@@ -978,12 +982,9 @@ private:
                   "no constraint: the region of interest is the whole mesh and has no control vertex");
     m_preprocess_report.number_of_constrained_vertices = m_constrained.size();
 
-    int number_of_components = 0;
-    const std::vector<int> component = Spectral_deformation::internal::connected_components(
-        region.arrays.triangles, region.arrays.number_of_vertices(), number_of_components);
-    std::vector<char> has_constraint(static_cast<std::size_t>(number_of_components), 0);
+    std::vector<char> has_constraint(static_cast<std::size_t>(region.number_of_components), 0);
     for(int i : m_constrained)
-      has_constraint[static_cast<std::size_t>(component[static_cast<std::size_t>(i)])] = 1;
+      has_constraint[static_cast<std::size_t>(region.component[static_cast<std::size_t>(i)])] = 1;
     for(char c : has_constraint)
       if(!c)
         throw Error(Error::INVALID_ARGUMENT,
