@@ -507,8 +507,11 @@ private:
       {
         require(std::isfinite(report.max_control_residual) && std::isfinite(report.rms_control_residual),
                 "deform(): non-finite residuals reported");
+        // Vertices that no face joins to the region (isolated ROI vertices)
+        // are not written: they keep their input position, finite or not.
         for(Vertex v : d.roi_vertices())
-          require(finite_point(m_mesh.point(v)), "deform() left a non-finite ROI vertex");
+          require(finite_point(m_mesh.point(v)) || same_point(m_mesh.point(v), before[v]),
+                  "deform() left a non-finite ROI vertex");
       }
       else
         require(!report.message.empty(), "deform() failed without a message");
