@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The Catch2 suite built with AddressSanitizer and UndefinedBehaviorSanitizer
+# (SSMD_SANITIZE=ON), tests only, in build-asan/ (or $SSMD_ASAN_BUILD_DIR).
+# RelWithDebInfo keeps the suite fast enough and the reports readable; any
+# sanitizer report fails the test that triggered it.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${SSMD_ASAN_BUILD_DIR:-$root/build-asan}"
+jobs="${SSMD_JOBS:-$(nproc)}"
+
+bash "$root/scripts/install_dependencies.sh"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSMD_SANITIZE=ON \
+  -DSSMD_BUILD_TESTS=ON -DSSMD_BUILD_EXAMPLES=OFF -DSSMD_BUILD_BENCHMARKS=OFF \
+  -DSSMD_BUILD_DOC=OFF -DSSMD_BUILD_TOOLS=OFF -DSSMD_BUILD_FUZZERS=OFF >/dev/null
+cmake --build "$build" --parallel "$jobs"
+cd "$build"
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+ctest --output-on-failure --timeout 1800 -j "$jobs"
