@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the package, its tests, examples, benchmarks
 # and documentation need, when they are missing. Uses apt-get as root, or
-# through sudo when available.
+# through sudo when available. Extra packages given as arguments (e.g. the
+# fuzzing toolchain of scripts/fuzz.sh) are installed the same way.
 set -euo pipefail
 
 packages=(
@@ -9,6 +10,7 @@ packages=(
   libcgal-dev libeigen3-dev libboost-dev libspectra-dev libsuitesparse-dev catch2
   libcgal-demo doxygen
   f3d xvfb xauth python3-pil python3-matplotlib fonts-dejavu-core
+  "$@"
 )
 
 missing=()
