@@ -77,6 +77,8 @@
 #ifndef SSMD_BENCHMARK_CXX_FLAGS
 #define SSMD_BENCHMARK_CXX_FLAGS ""
 #endif
+#include "benchmark_support.h"
+
 #ifndef SSMD_BENCHMARK_COMPILE_OPTIONS
 #define SSMD_BENCHMARK_COMPILE_OPTIONS ""
 #endif
@@ -85,6 +87,8 @@
 #endif
 
 namespace {
+
+using namespace ssmd_benchmark;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
@@ -246,26 +250,6 @@ struct Sample
     return (sorted.size() % 2 == 1) ? sorted[half] : 0.5 * (sorted[half - 1] + sorted[half]);
   }
 };
-
-/// The value in KiB of the line `key:   1234 kB` of a /proc file, -1 if absent.
-long proc_field_kib(const std::string& file, const std::string& key)
-{
-  std::ifstream in(file);
-  std::string line;
-  while(std::getline(in, line))
-    if(line.compare(0, key.size() + 1, key + ":") == 0)
-      return std::strtol(line.c_str() + key.size() + 1, nullptr, 10);
-  return -1;
-}
-
-/// Resets VmHWM to the current resident size (Linux >= 4.0).
-bool reset_peak_resident_size()
-{
-  std::ofstream clear_refs("/proc/self/clear_refs");
-  clear_refs << "5";
-  clear_refs.close();
-  return !clear_refs.fail();
-}
 
 /// The time, in microseconds per page, of the first write to freshly mapped
 /// memory (page fault and zeroing). On bare metal it is a fraction of a
@@ -475,35 +459,6 @@ Case_result parse(const std::string& text)
   return result;
 }
 
-void write_all(int fd, const std::string& text)
-{
-  std::size_t written = 0;
-  while(written < text.size())
-  {
-    const ssize_t count = ::write(fd, text.data() + written, text.size() - written);
-    if(count < 0 && errno == EINTR)
-      continue;
-    if(count <= 0)
-      return;
-    written += static_cast<std::size_t>(count);
-  }
-}
-
-std::string read_all(int fd)
-{
-  std::string text;
-  char buffer[4096];
-  for(;;)
-  {
-    const ssize_t count = ::read(fd, buffer, sizeof(buffer));
-    if(count < 0 && errno == EINTR)
-      continue;
-    if(count <= 0)
-      return text;
-    text.append(buffer, static_cast<std::size_t>(count));
-  }
-}
-
 Case_result run_case_in_child(const Mesh& mesh, int m, int repetitions, int cheap_repetitions,
                               const std::string& what)
 {
@@ -595,75 +550,6 @@ std::string scientific(double value)
     return "–";
   char buffer[64];
   std::snprintf(buffer, sizeof(buffer), "%.1e", value);
-  return buffer;
-}
-
-std::string first_line_value(const std::string& file, const std::string& key)
-{
-  std::ifstream in(file);
-  std::string line;
-  while(std::getline(in, line))
-    if(line.compare(0, key.size(), key) == 0)
-    {
-      const std::size_t colon = line.find(':');
-      if(colon != std::string::npos)
-      {
-        const std::size_t start = line.find_first_not_of(" \t", colon + 1);
-        return start == std::string::npos ? std::string() : line.substr(start);
-      }
-    }
-  return "unknown";
-}
-
-/// The BLAS and LAPACK libraries mapped into this process (CHOLMOD's
-/// supernodal factorization runs on them).
-std::string loaded_blas()
-{
-  std::ifstream maps("/proc/self/maps");
-  std::set<std::string> libraries;
-  std::string line;
-  while(std::getline(maps, line))
-  {
-    const std::size_t slash = line.find('/');
-    if(slash == std::string::npos)
-      continue;
-    const std::string path = line.substr(slash);
-    const std::string file = path.substr(path.rfind('/') + 1);
-    if(file.find("blas") != std::string::npos || file.find("lapack") != std::string::npos)
-      libraries.insert(path);
-  }
-  std::string text;
-  for(const std::string& library : libraries)
-    text += (text.empty() ? "" : ", ") + library;
-  return text.empty() ? "none" : text;
-}
-
-std::string compiler()
-{
-#if defined(__clang__)
-  return "Clang " __clang_version__;
-#elif defined(__GNUC__)
-  return "GCC " __VERSION__;
-#else
-  return "unknown";
-#endif
-}
-
-std::string sparse_solver()
-{
-#ifdef CGAL_SSMD_USE_CHOLMOD
-  return "CHOLMOD " + std::to_string(CHOLMOD_MAIN_VERSION) + "." +
-         std::to_string(CHOLMOD_SUB_VERSION) + "." + std::to_string(CHOLMOD_SUBSUB_VERSION) +
-         " supernodal LLᵀ (`CGAL_SSMD_USE_CHOLMOD` defined)";
-#else
-  return "Eigen `SimplicialLDLT` (`CGAL_SSMD_USE_CHOLMOD` not defined)";
-#endif
-}
-
-std::string utc_time(std::time_t time)
-{
-  char buffer[64];
-  std::strftime(buffer, sizeof(buffer), "%Y-%m-%d %H:%M UTC", std::gmtime(&time));
   return buffer;
 }
 

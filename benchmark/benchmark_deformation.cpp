@@ -324,26 +324,6 @@ double seconds_of(Function&& function)
   return seconds_since(start);
 }
 
-/// The value in KiB of the line `key:   1234 kB` of a /proc file, -1 if absent.
-long proc_field_kib(const std::string& file, const std::string& key)
-{
-  std::ifstream in(file);
-  std::string line;
-  while(std::getline(in, line))
-    if(line.compare(0, key.size() + 1, key + ":") == 0)
-      return std::strtol(line.c_str() + key.size() + 1, nullptr, 10);
-  return -1;
-}
-
-/// Resets VmHWM to the current resident size (Linux >= 4.0).
-bool reset_peak_resident_size()
-{
-  std::ofstream clear_refs("/proc/self/clear_refs");
-  clear_refs << "5";
-  clear_refs.close();
-  return !clear_refs.fail();
-}
-
 /// The time, in microseconds per page, of the first write to freshly mapped
 /// memory (page fault and zeroing).
 double first_touch_microseconds_per_page()
@@ -360,39 +340,6 @@ double first_touch_microseconds_per_page()
   });
   ::munmap(block, size);
   return 1e6 * seconds / static_cast<double>(size / page);
-}
-
-/// The BLAS and LAPACK libraries mapped into this process.
-std::string loaded_blas()
-{
-  std::ifstream maps("/proc/self/maps");
-  std::set<std::string> libraries;
-  std::string line;
-  while(std::getline(maps, line))
-  {
-    const std::size_t slash = line.find('/');
-    if(slash == std::string::npos)
-      continue;
-    const std::string path = line.substr(slash);
-    const std::string file = path.substr(path.rfind('/') + 1);
-    if(file.find("blas") != std::string::npos || file.find("lapack") != std::string::npos)
-      libraries.insert(path);
-  }
-  std::string text;
-  for(const std::string& library : libraries)
-    text += (text.empty() ? "" : ", ") + library;
-  return text.empty() ? "none" : text;
-}
-
-std::string sparse_solver()
-{
-#ifdef CGAL_SSMD_USE_CHOLMOD
-  return "CHOLMOD " + std::to_string(CHOLMOD_MAIN_VERSION) + "." +
-         std::to_string(CHOLMOD_SUB_VERSION) + "." + std::to_string(CHOLMOD_SUBSUB_VERSION) +
-         " supernodal LLᵀ (`CGAL_SSMD_USE_CHOLMOD` defined)";
-#else
-  return "Eigen `SimplicialLDLT` (`CGAL_SSMD_USE_CHOLMOD` not defined)";
-#endif
 }
 
 // ----------------------------------------------------------------------------
@@ -547,35 +494,6 @@ Bundle parse(const std::string& text)
     }
   }
   return bundle;
-}
-
-void write_all(int fd, const std::string& text)
-{
-  std::size_t written = 0;
-  while(written < text.size())
-  {
-    const ssize_t count = ::write(fd, text.data() + written, text.size() - written);
-    if(count < 0 && errno == EINTR)
-      continue;
-    if(count <= 0)
-      return;
-    written += static_cast<std::size_t>(count);
-  }
-}
-
-std::string read_all(int fd)
-{
-  std::string text;
-  char buffer[4096];
-  for(;;)
-  {
-    const ssize_t count = ::read(fd, buffer, sizeof(buffer));
-    if(count < 0 && errno == EINTR)
-      continue;
-    if(count <= 0)
-      return text;
-    text.append(buffer, static_cast<std::size_t>(count));
-  }
 }
 
 /// Runs `work` in a child process and returns what it measured.

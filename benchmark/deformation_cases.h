@@ -13,6 +13,8 @@
 #ifndef SSMD_BENCHMARK_DEFORMATION_CASES_H
 #define SSMD_BENCHMARK_DEFORMATION_CASES_H
 
+#include "benchmark_support.h"
+
 #include <CGAL/Spectral_surface_mesh_deformation/IO/deformation_selection.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/arap_energy.h>
@@ -571,23 +573,6 @@ inline std::string describe_transformation(const Deformation_case& c, const Case
   return text.str();
 }
 
-inline std::string first_line_value(const std::string& file, const std::string& key)
-{
-  std::ifstream in(file);
-  std::string line;
-  while(std::getline(in, line))
-    if(line.compare(0, key.size(), key) == 0)
-    {
-      const std::size_t colon = line.find(':');
-      if(colon != std::string::npos)
-      {
-        const std::size_t start = line.find_first_not_of(" \t", colon + 1);
-        return start == std::string::npos ? std::string() : line.substr(start);
-      }
-    }
-  return "unknown";
-}
-
 inline double load_average()
 {
   std::ifstream in("/proc/loadavg");
@@ -608,24 +593,6 @@ inline double memory_gib()
       break;
     }
   return kib / (1024.0 * 1024.0);
-}
-
-inline std::string compiler()
-{
-#if defined(__clang__)
-  return "Clang " __clang_version__;
-#elif defined(__GNUC__)
-  return "GCC " __VERSION__;
-#else
-  return "unknown";
-#endif
-}
-
-inline std::string utc_time(std::time_t time)
-{
-  char buffer[64];
-  std::strftime(buffer, sizeof(buffer), "%Y-%m-%d %H:%M UTC", std::gmtime(&time));
-  return buffer;
 }
 
 } // namespace ssmd_benchmark
