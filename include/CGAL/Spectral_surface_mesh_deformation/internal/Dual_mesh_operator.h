@@ -111,10 +111,8 @@ public:
       const Eigen::Vector3d q2 = c.row(m_neighbours(f, 2)).transpose();
       const Eigen::Vector3d normal = (q1 - q0).cross(q2 - q0);
       const double squared_norm = normal.squaredNorm();
-      const double scale = (std::max)({(q1 - q0).squaredNorm(), (q2 - q1).squaredNorm(),
-                                       (q0 - q2).squaredNorm()});
       Eigen::Vector3d w, n;
-      if(squared_norm > 1e-24 * scale * scale && squared_norm > 0)
+      if(!is_degenerate(q0, q1, q2, squared_norm))
       {
         // Barycentric coordinates of the projection of p: signed areas of the
         // sub-triangles, measured along the normal (the projection drops out).
@@ -170,9 +168,8 @@ public:
       const Eigen::Vector3d e2 = centroids.row(m_neighbours(f, 2)).transpose() - q0;
       const Eigen::Vector3d normal = e1.cross(e2);
       const double squared_norm = normal.squaredNorm();
-      const double scale = (std::max)({e1.squaredNorm(), (e2 - e1).squaredNorm(), e2.squaredNorm()});
-      // The same test as evaluate(): a degenerate row keeps its normal.
-      if(squared_norm > 1e-24 * scale * scale && squared_norm > 0)
+      // A degenerate row keeps its normal, as in evaluate().
+      if(!is_degenerate(q0, q0 + e1, q0 + e2, squared_norm))
         normals.row(r) = normal.transpose() / std::sqrt(squared_norm);
     }
   }
@@ -227,6 +224,17 @@ public:
   }
 
 private:
+  // Whether the neighbour triangle (q0, q1, q2), whose normal (q1 - q0) x
+  // (q2 - q0) has the squared norm `squared_norm`, is too thin to define a
+  // plane, relative to its longest edge.
+  static bool is_degenerate(const Eigen::Vector3d& q0, const Eigen::Vector3d& q1,
+                            const Eigen::Vector3d& q2, double squared_norm)
+  {
+    const double scale = (std::max)({(q1 - q0).squaredNorm(), (q2 - q1).squaredNorm(),
+                                     (q0 - q2).squaredNorm()});
+    return !(squared_norm > 1e-24 * scale * scale && squared_norm > 0);
+  }
+
   void build_neighbours()
   {
     typedef Spectral_deformation_error Error;
