@@ -23,3 +23,30 @@ if(NOT DEFINED SSMD_USE_CHOLMOD OR SSMD_USE_CHOLMOD)
     endif()
   endif()
 endif()
+
+# OpenBLAS is optional: when found, the tall dense products of the block
+# eigensolver call its dgemm (vector instructions chosen at run time) instead
+# of Eigen's product, and CHOLMOD, which loads the system BLAS, gets the same
+# optimized kernels when Debian's alternatives point to it.
+set(SSMD_HAS_OPENBLAS OFF)
+if(NOT DEFINED SSMD_USE_OPENBLAS OR SSMD_USE_OPENBLAS)
+  find_library(SSMD_OPENBLAS_LIBRARY NAMES openblas)
+  if(SSMD_OPENBLAS_LIBRARY)
+    set(SSMD_HAS_OPENBLAS ON)
+    if(NOT TARGET SSMD::openblas)
+      add_library(SSMD::openblas INTERFACE IMPORTED)
+      set_target_properties(SSMD::openblas PROPERTIES
+        INTERFACE_LINK_LIBRARIES "${SSMD_OPENBLAS_LIBRARY}")
+    endif()
+  endif()
+endif()
+
+# OpenMP is optional: when found, the per-iteration passes over the basis and
+# Eigen's own dense products use every core (OMP_NUM_THREADS limits them).
+set(SSMD_HAS_OPENMP OFF)
+if(NOT DEFINED SSMD_USE_OPENMP OR SSMD_USE_OPENMP)
+  find_package(OpenMP QUIET COMPONENTS CXX)
+  if(OpenMP_CXX_FOUND)
+    set(SSMD_HAS_OPENMP ON)
+  endif()
+endif()

@@ -29,7 +29,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 typedef Mesh::Vertex_index Vertex_index;
-typedef CGAL::Spectra_eigensolver_traits<> Eigensolver_traits;
+typedef CGAL::Block_lanczos_eigensolver_traits<> Eigensolver_traits;
 typedef CGAL::Manifold_harmonics_basis<Mesh> Basis;
 typedef CGAL::Spectral_surface_mesh_deformation<Mesh> Deformation;
 

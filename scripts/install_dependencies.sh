@@ -7,7 +7,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake
-  libcgal-dev libeigen3-dev libboost-dev libspectra-dev libsuitesparse-dev catch2
+  libcgal-dev libeigen3-dev libboost-dev libspectra-dev libsuitesparse-dev libopenblas-dev catch2
   libcgal-demo doxygen
   f3d xvfb xauth python3-pil python3-matplotlib fonts-dejavu-core
   "$@"

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
+#include <vector>
 
 using namespace test_meshes;
 typedef CGAL::Manifold_harmonics_basis<Surface_mesh> Basis;
@@ -83,7 +85,7 @@ TEST_CASE("cotangent operators: symmetry, zero row sums, area, linear precision"
 
 TEST_CASE("sphere spectrum: l(l+1)/R^2 with multiplicities 2l+1", "[basis]")
 {
-  // 2562 vertices: above the dense threshold, so this is the Spectra path.
+  // 2562 vertices: above the dense threshold, so this is the block Lanczos path.
   const double R = 2.0;
   const Surface_mesh sphere = to_mesh<Surface_mesh>(icosphere(4, R));
   const Basis basis(sphere, 25);
@@ -139,8 +141,9 @@ TEST_CASE("dense and Spectra solvers span the same subspace", "[basis]")
 {
   const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(24));
   typedef CGAL::Spectra_eigensolver_traits<> Traits;
-  const Basis lanczos(mesh, 30, CGAL::parameters::default_values(), Traits(1000, 1e-10, 0));
-  const Basis dense(mesh, 30, CGAL::parameters::default_values(), Traits(1000, 1e-10, 100000));
+  typedef CGAL::Manifold_harmonics_basis<Surface_mesh, Traits> Spectra_basis;
+  const Spectra_basis lanczos(mesh, 30, CGAL::parameters::default_values(), Traits(1000, 1e-10, 0));
+  const Spectra_basis dense(mesh, 30, CGAL::parameters::default_values(), Traits(1000, 1e-10, 100000));
   CHECK((lanczos.eigenvalues() - dense.eigenvalues()).cwiseAbs().maxCoeff() <
         1e-8 * dense.eigenvalues().maxCoeff());
   // Compare subspaces, not vectors: eigenvalues may be (nearly) repeated. Cut
@@ -150,6 +153,140 @@ TEST_CASE("dense and Spectra solvers span the same subspace", "[basis]")
   CHECK(subspace_distance(dense.basis().leftCols(cut), lanczos.basis().leftCols(cut),
                           dense.mass()) < 1e-6);
 }
+
+TEST_CASE("block Lanczos, Spectra and the dense solver agree", "[basis][block_lanczos]")
+{
+  // 2562 vertices; the dense path of both iterative solvers and the fallback
+  // to the reference solver are disabled. The sphere's clusters of 2l + 1
+  // eigenvalues are the hard case of a block method: it needs a larger
+  // subspace than the default.
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(4, 1.5));
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
+  const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(mesh).diagonal();
+  const Eigen::Index m = 40;
+  Eigen::VectorXd dense_values, block_values, spectra_values;
+  Eigen::MatrixXd dense_vectors, block_vectors, spectra_vectors;
+  std::string message;
+  REQUIRE(CGAL::Spectral_deformation::internal::dense_generalized_eigenpairs(
+      Q, mass, m, dense_values, dense_vectors, message));
+
+  for(Eigen::Index block_size : {Eigen::Index(1), Eigen::Index(3), Eigen::Index(8), Eigen::Index(16)})
+  {
+    INFO("block size " << block_size);
+    CGAL::Block_lanczos_eigensolver_traits<> block(1e-10, block_size, 12 * m, 0);
+    block.set_reference_fallback(false);
+    std::vector<int> stages;
+    std::size_t last_solves = 0;
+    bool solves_grow = true;
+    block.set_progress_callback(
+        [&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& progress) {
+          if(stages.empty() || stages.back() != int(progress.stage))
+            stages.push_back(int(progress.stage));
+          solves_grow = solves_grow && progress.solves >= last_solves &&
+                        progress.solves % std::size_t(block_size) == 0 &&
+                        progress.subspace_dimension <= progress.maximum_subspace_dimension;
+          last_solves = progress.solves;
+        });
+    REQUIRE(block.compute(Q, mass, m, block_values, block_vectors));
+    CHECK(block.error_message().empty());
+    typedef CGAL::Block_lanczos_eigensolver_traits<>::Progress Progress;
+    CHECK(stages == std::vector<int>{Progress::FACTORIZATION, Progress::ITERATION, Progress::FINISHED});
+    CHECK(solves_grow);
+    CHECK(last_solves > std::size_t(m));
+
+    CHECK((block_values - dense_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
+    const Eigen::MatrixXd gram = block_vectors.transpose() * mass.asDiagonal() * block_vectors;
+    CHECK((gram - Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff() < 1e-10);
+    // The sphere's eigenvalues come in clusters of 2l + 1: compare the
+    // subspaces of whole clusters (l ≤ 5 are the first 36 functions).
+    CHECK(subspace_distance(dense_vectors.leftCols(36), block_vectors.leftCols(36), mass) < 1e-6);
+  }
+
+  CGAL::Spectra_eigensolver_traits<> spectra(1000, 1e-10, 0);
+  REQUIRE(spectra.compute(Q, mass, m, spectra_values, spectra_vectors));
+  CHECK((spectra_values - block_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
+}
+
+TEST_CASE("block Lanczos: several components, small problems and bad arguments",
+          "[basis][block_lanczos]")
+{
+  // Two components give a zero eigenvalue of multiplicity 2, the two unit
+  // spheres the l = 1 eigenvalue six times: more than a block of 4.
+  const Surface_mesh spheres = to_mesh<Surface_mesh>(two_spheres(3));
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(spheres);
+  const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(spheres).diagonal();
+  Eigen::VectorXd values, dense_values;
+  Eigen::MatrixXd vectors, dense_vectors;
+  std::string message;
+  REQUIRE(CGAL::Spectral_deformation::internal::dense_generalized_eigenpairs(
+      Q, mass, 12, dense_values, dense_vectors, message));
+  CGAL::Block_lanczos_eigensolver_traits<> block(1e-10, 4, 200, 0);
+  block.set_reference_fallback(false);
+  REQUIRE(block.compute(Q, mass, 12, values, vectors));
+  CHECK((values - dense_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
+  CHECK(subspace_distance(dense_vectors.leftCols(8), vectors.leftCols(8), mass) < 1e-6);
+
+  // Small problems (here 1284 vertices against a threshold of 2000) go to
+  // the dense solver: exact, and reported as such.
+  CGAL::Block_lanczos_eigensolver_traits<> small(1e-10, 0, 0, 2000);
+  bool dense_reported = false;
+  small.set_progress_callback([&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) {
+    dense_reported = dense_reported || p.stage == p.DENSE_SOLVE;
+  });
+  REQUIRE(small.compute(Q, mass, 12, values, vectors));
+  CHECK(dense_reported);
+  CHECK((values - dense_values).cwiseAbs().maxCoeff() < 1e-10 * dense_values.maxCoeff());
+
+  // With a subspace too small for the repeated eigenvalues the reference
+  // solver takes over, and says so.
+  CGAL::Block_lanczos_eigensolver_traits<> falling_back(1e-10, 4, 48, 0);
+  bool reference_reported = false;
+  falling_back.set_progress_callback(
+      [&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) {
+        reference_reported = reference_reported || p.stage == p.REFERENCE_SOLVE;
+      });
+  REQUIRE(falling_back.compute(Q, mass, 12, values, vectors));
+  CHECK(falling_back.error_message().empty());
+  CHECK((values - dense_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
+  CHECK(reference_reported);
+
+  CHECK_FALSE(block.compute(Q, mass, 0, values, vectors));
+  CHECK(!block.error_message().empty());
+  CHECK_FALSE(block.compute(Q, mass, Q.rows() + 1, values, vectors));
+}
+
+#ifdef CGAL_SSMD_USE_CHOLMOD
+TEST_CASE("CHOLMOD solver traits: solves with reused work arrays match a simplicial LDLT",
+          "[basis][solver]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(20));
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
+  const Eigen::SparseMatrix<double> M = CGAL::lumped_mass_matrix(mesh);
+  CGAL::Cholmod_sparse_spd_solver_traits solver;
+  Eigen::MatrixXd X;
+  CHECK_FALSE(solver.solve(Eigen::MatrixXd::Ones(Q.rows(), 1), X)); // nothing factored
+
+  for(double shift : {1.0, 10.0})
+  {
+    const Eigen::SparseMatrix<double> A = Q + shift * M;
+    REQUIRE(solver.factor(A));
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> reference(A);
+    // Different numbers of right-hand sides in turn: the work arrays are
+    // resized, reused, and never leak a previous solution.
+    for(Eigen::Index columns : {Eigen::Index(3), Eigen::Index(1), Eigen::Index(5), Eigen::Index(5)})
+    {
+      const Eigen::MatrixXd B = Eigen::MatrixXd::Random(Q.rows(), columns);
+      REQUIRE(solver.solve(B, X));
+      const Eigen::MatrixXd expected = reference.solve(B);
+      INFO("shift " << shift << ", " << columns << " right-hand sides");
+      CHECK((X - expected).norm() < 1e-10 * expected.norm());
+    }
+  }
+  CHECK_FALSE(solver.solve(Eigen::MatrixXd::Ones(Q.rows() + 1, 1), X)); // wrong size
+  CHECK_FALSE(solver.factor(-Q - M)); // negative definite
+  CHECK_FALSE(solver.solve(Eigen::MatrixXd::Ones(Q.rows(), 1), X));
+}
+#endif
 
 TEST_CASE("transform then inverse is the identity when m = n", "[basis]")
 {
@@ -341,7 +478,15 @@ TEST_CASE("bad input gives a clear error", "[basis][errors]")
     // One restart and a tolerance no Lanczos run can meet; dense path disabled.
     const Surface_mesh sphere = to_mesh<Surface_mesh>(icosphere(3));
     CGAL::Spectra_eigensolver_traits<> hopeless(1, 1e-300, 0);
-    CHECK(error_code_of([&] { Basis(sphere, 40, CGAL::parameters::default_values(), hopeless); }) ==
+    typedef CGAL::Manifold_harmonics_basis<Surface_mesh, CGAL::Spectra_eigensolver_traits<>>
+        Spectra_basis;
+    CHECK(error_code_of([&] {
+            Spectra_basis(sphere, 40, CGAL::parameters::default_values(), hopeless);
+          }) == Error::SOLVER_FAILURE);
+    // The block solver with a subspace too small to converge in.
+    CGAL::Block_lanczos_eigensolver_traits<> cramped(1e-10, 8, 48, 0);
+    cramped.set_reference_fallback(false);
+    CHECK(error_code_of([&] { Basis(sphere, 40, CGAL::parameters::default_values(), cramped); }) ==
           Error::SOLVER_FAILURE);
   }
   SECTION("transform with the wrong number of rows")

@@ -39,7 +39,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 typedef Mesh::Vertex_index Vertex_index;
-typedef CGAL::Spectra_eigensolver_traits<> Eigensolver_traits;
+typedef CGAL::Block_lanczos_eigensolver_traits<> Eigensolver_traits;
 typedef Deformation_tool::Basis_progress_bar<Eigensolver_traits::Progress> Progress_bar;
 
 const char* const program_name = "ssmd_deform";

@@ -8,6 +8,7 @@
 #define CGAL_MANIFOLD_HARMONICS_BASIS_H
 
 #include <CGAL/Spectral_surface_mesh_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_surface_mesh_deformation/Block_lanczos_eigensolver_traits.h>
 #include <CGAL/Spectral_surface_mesh_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_surface_mesh_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
@@ -94,13 +95,14 @@ void compute_manifold_harmonics(const Triangle_arrays& mesh, Eigen::Index m,
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`, triangulated.
 /// \tparam EigensolverTraits a model of `ManifoldHarmonicsEigensolverTraits`;
-///         `CGAL::Default` means `Spectra_eigensolver_traits<>`.
+///         `CGAL::Default` means `Block_lanczos_eigensolver_traits<>`;
+///         `Spectra_eigensolver_traits<>` is the reference solver.
 template <class TriangleMesh, class EigensolverTraits = CGAL::Default>
 class Manifold_harmonics_basis
 {
 public:
   /// The eigensolver traits type.
-  typedef typename CGAL::Default::Get<EigensolverTraits, Spectra_eigensolver_traits<>>::type
+  typedef typename CGAL::Default::Get<EigensolverTraits, Block_lanczos_eigensolver_traits<>>::type
       Eigensolver_traits;
   /// Dense matrix type of bases and per-vertex data.
   typedef Eigen::MatrixXd Matrix;

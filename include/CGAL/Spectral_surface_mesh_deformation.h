@@ -10,6 +10,7 @@
 #include <CGAL/Manifold_harmonics_basis.h>
 #include <CGAL/Spectral_surface_mesh_deformation/Spectral_deformation_error.h>
 #include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_surface_mesh_deformation/Block_lanczos_eigensolver_traits.h>
 #include <CGAL/Spectral_surface_mesh_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Detail_transfer.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Spatial_dual_laplacian_solver.h>
@@ -186,7 +187,7 @@ struct Spectral_deformation_report
 ///         class and not used; `Default` as in CGAL
 /// \tparam TAG the algorithm, a `Spectral_deformation_algorithm_tag`
 /// \tparam ET a model of `ManifoldHarmonicsEigensolverTraits`; `Default` means
-///         `Spectra_eigensolver_traits<>`
+///         `Block_lanczos_eigensolver_traits<>`
 /// \tparam ST a model of `SparseSPDSolverTraits`; `Default` means
 ///         `Default_sparse_spd_solver_traits`
 /// \tparam Reserved not used; it keeps `VPM` at the position it has in CGAL's class
@@ -218,7 +219,7 @@ public:
   typedef typename Default::Get<VPM, typename boost::property_map<TM, vertex_point_t>::type>::type
       Vertex_point_map;
   /// The eigensolver traits type.
-  typedef typename Default::Get<ET, Spectra_eigensolver_traits<>>::type Eigensolver_traits;
+  typedef typename Default::Get<ET, Block_lanczos_eigensolver_traits<>>::type Eigensolver_traits;
   /// The sparse solver traits type.
   typedef typename Default::Get<ST, Default_sparse_spd_solver_traits>::type Sparse_solver_traits;
   /// The point type.

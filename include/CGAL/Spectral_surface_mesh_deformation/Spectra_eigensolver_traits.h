@@ -8,6 +8,7 @@
 #define CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_SPECTRA_EIGENSOLVER_TRAITS_H
 
 #include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/dense_eigenpairs.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -173,7 +174,11 @@ public:
     if(n <= m_dense_threshold || ncv >= n)
     {
       report(progress, Progress::DENSE_SOLVE);
-      const bool success = compute_dense(stiffness, mass, m, eigenvalues, eigenvectors);
+      std::string message;
+      const bool success =
+          Spectral_deformation::internal::dense_generalized_eigenpairs(stiffness, mass, m, eigenvalues,
+                                                                      eigenvectors, message) ||
+          fail(message);
       report(progress, Progress::FINISHED);
       return success;
     }
@@ -224,22 +229,6 @@ public:
   const std::string& error_message() const { return m_error_message; }
 
 private:
-  bool compute_dense(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
-                     Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors)
-  {
-    // M^{-1/2} Q M^{-1/2} y = lambda y with h = M^{-1/2} y is the same problem,
-    // symmetric and standard because M is diagonal and positive.
-    const Eigen::VectorXd inv_sqrt_mass = mass.cwiseSqrt().cwiseInverse();
-    const Eigen::MatrixXd scaled =
-        inv_sqrt_mass.asDiagonal() * Eigen::MatrixXd(stiffness) * inv_sqrt_mass.asDiagonal();
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(scaled);
-    if(solver.info() != Eigen::Success)
-      return fail("the dense eigensolver did not converge");
-    eigenvalues = solver.eigenvalues().head(m);
-    eigenvectors = inv_sqrt_mass.asDiagonal() * solver.eigenvectors().leftCols(m);
-    return true;
-  }
-
   bool fail(const std::string& message)
   {
     m_error_message = message;
