@@ -15,7 +15,7 @@
 //     eigensolver traits;
 //   - the basis: the CGAL::Manifold_harmonics_basis constructor with the
 //     default traits, end to end (it repeats the two phases above, then runs
-//     the Lanczos iteration);
+//     the eigensolver iteration);
 //   - the peak resident memory of the basis computation;
 //   - the accuracy of the result: max |HᵀMH - I| and the eigen-residuals.
 //
@@ -341,8 +341,8 @@ Case_result run_case(const Mesh& mesh, int m, int repetitions, int cheap_repetit
   }
   report_progress(what, "assembly median of", cheap_repetitions, result.assembly.median());
 
-  // Factorization of Q - sigma M alone, with the shift that
-  // Spectra_eigensolver_traits uses (the cost hardly depends on its value).
+  // Factorization of Q - sigma M alone, with the shift that the eigensolver
+  // traits use (the cost hardly depends on its value).
   const double sigma = -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
   Eigen::SparseMatrix<double> shifted = stiffness;
   for(Eigen::Index i = 0; i < mass.size(); ++i)
@@ -594,8 +594,9 @@ void write_report(std::ostream& out, const Options& options, const Run_info& run
       << EIGEN_MAJOR_VERSION << "." << EIGEN_MINOR_VERSION << ", Spectra "
       << SPECTRA_MAJOR_VERSION << "." << SPECTRA_MINOR_VERSION << "." << SPECTRA_PATCH_VERSION
       << "\n"
-      << "- Eigensolver: `Spectra_eigensolver_traits<>` defaults (shift-invert Lanczos, "
-         "tolerance 1e-10, ncv = max(2m + 1, m + 20))\n"
+      << "- Eigensolver: the default, `Block_lanczos_eigensolver_traits<>` (block shift-invert "
+         "Lanczos, tolerance 1e-10, blocks of max(8, m/32)); `benchmark_eigensolvers` compares "
+         "it with Spectra's solver\n"
       << "- Repetitions: basis constructor " << options.repetitions << " (meshes above "
       << options.large_mesh_vertices << " vertices: " << options.large_mesh_repetitions
       << "), assembly and factorization " << options.cheap_repetitions
@@ -639,7 +640,7 @@ void write_report(std::ostream& out, const Options& options, const Run_info& run
       << "- *total*: the `Manifold_harmonics_basis` constructor with default traits, end to "
          "end; it performs the assembly and the factorization itself.\n"
       << "- *eigensolve*: the rest of the constructor, i.e. total minus the medians of "
-         "assembly and factorization: the Lanczos iteration with its solves, plus the sign "
+         "assembly and factorization: the eigensolver iteration with its solves, plus the sign "
          "normalization and the fingerprint of the mesh.\n"
       << "- Large arrays are allocated fresh in every run (glibc's mmap threshold is fixed at "
          "128 KiB), as in a single computation in a new process, so the times include the "

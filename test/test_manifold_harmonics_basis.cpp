@@ -175,6 +175,7 @@ TEST_CASE("block Lanczos, Spectra and the dense solver agree", "[basis][block_la
     INFO("block size " << block_size);
     CGAL::Block_lanczos_eigensolver_traits<> block(1e-10, block_size, 12 * m, 0);
     block.set_reference_fallback(false);
+    block.set_reference_threshold(0);
     std::vector<int> stages;
     std::size_t last_solves = 0;
     bool solves_grow = true;
@@ -222,6 +223,7 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
       Q, mass, 12, dense_values, dense_vectors, message));
   CGAL::Block_lanczos_eigensolver_traits<> block(1e-10, 4, 200, 0);
   block.set_reference_fallback(false);
+  block.set_reference_threshold(0);
   REQUIRE(block.compute(Q, mass, 12, values, vectors));
   CHECK((values - dense_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
   CHECK(subspace_distance(dense_vectors.leftCols(8), vectors.leftCols(8), mass) < 1e-6);
@@ -237,9 +239,22 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
   CHECK(dense_reported);
   CHECK((values - dense_values).cwiseAbs().maxCoeff() < 1e-10 * dense_values.maxCoeff());
 
+  // Below reference_threshold() the reference solver runs.
+  CGAL::Block_lanczos_eigensolver_traits<> delegating;
+  delegating.set_reference_threshold(10000);
+  bool delegated = false;
+  delegating.set_progress_callback(
+      [&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) {
+        delegated = delegated || p.stage == p.REFERENCE_SOLVE;
+      });
+  REQUIRE(delegating.compute(Q, mass, 12, values, vectors));
+  CHECK(delegated);
+  CHECK((values - dense_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
+
   // With a subspace too small for the repeated eigenvalues the reference
   // solver takes over, and says so.
   CGAL::Block_lanczos_eigensolver_traits<> falling_back(1e-10, 4, 48, 0);
+  falling_back.set_reference_threshold(0);
   bool reference_reported = false;
   falling_back.set_progress_callback(
       [&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) {
@@ -486,6 +501,7 @@ TEST_CASE("bad input gives a clear error", "[basis][errors]")
     // The block solver with a subspace too small to converge in.
     CGAL::Block_lanczos_eigensolver_traits<> cramped(1e-10, 8, 48, 0);
     cramped.set_reference_fallback(false);
+    cramped.set_reference_threshold(0);
     CHECK(error_code_of([&] { Basis(sphere, 40, CGAL::parameters::default_values(), cramped); }) ==
           Error::SOLVER_FAILURE);
   }

@@ -155,8 +155,8 @@ private:
       line << "dense eigensolve  elapsed " << seconds(elapsed);
       break;
     case Progress::REFERENCE_SOLVE:
-      line << "not converged in " << progress.subspace_dimension
-           << " dimensions: reference eigensolver  elapsed " << seconds(elapsed);
+      line << "reference Lanczos solver, solves " << progress.solves << "  elapsed "
+           << seconds(elapsed);
       break;
     case Progress::ITERATION:
     {
