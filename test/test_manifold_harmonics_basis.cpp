@@ -251,6 +251,21 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
   CHECK(delegated);
   CHECK((values - dense_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
 
+  // When a typical subspace (4 m columns) does not fit in the memory limit,
+  // the reference solver runs directly.
+  CGAL::Block_lanczos_eigensolver_traits<> frugal(1e-10, 4, 200, 0);
+  frugal.set_memory_limit(sizeof(double) * std::size_t(Q.rows()) * 40);
+  bool frugal_delegated = false;
+  frugal.set_progress_callback([&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) {
+    frugal_delegated = frugal_delegated || p.stage == p.REFERENCE_SOLVE;
+  });
+  REQUIRE(frugal.compute(Q, mass, 12, values, vectors));
+  CHECK(frugal_delegated);
+  frugal_delegated = false;
+  frugal.set_memory_limit(sizeof(double) * std::size_t(Q.rows()) * 220);
+  REQUIRE(frugal.compute(Q, mass, 12, values, vectors));
+  CHECK_FALSE(frugal_delegated);
+
   // With a subspace too small for the repeated eigenvalues the reference
   // solver takes over, and says so.
   CGAL::Block_lanczos_eigensolver_traits<> falling_back(1e-10, 4, 48, 0);
