@@ -343,10 +343,8 @@ Case_result run_case(const Mesh& mesh, int m, int repetitions, int cheap_repetit
 
   // Factorization of Q - sigma M alone, with the shift that the eigensolver
   // traits use (the cost hardly depends on its value).
-  const double sigma = -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
-  Eigen::SparseMatrix<double> shifted = stiffness;
-  for(Eigen::Index i = 0; i < mass.size(); ++i)
-    shifted.coeffRef(i, i) -= sigma * mass[i];
+  const Eigen::SparseMatrix<double> shifted = SD::shifted_stiffness(
+      stiffness, mass, SD::shift_invert_shift(mass));
   for(int run = 1; run <= cheap_repetitions; ++run)
   {
     CGAL::Default_sparse_spd_solver_traits solver;

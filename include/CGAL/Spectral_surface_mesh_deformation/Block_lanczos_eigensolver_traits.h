@@ -261,19 +261,12 @@ private:
   {
     using Spectral_deformation::internal::dense_product;
     const Eigen::Index n = stiffness.rows();
-    // Negative and small against the low end of the spectrum, as in
-    // Spectra_eigensolver_traits: Q - sigma M is positive definite.
-    const double sigma = -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
+    const double sigma = Spectral_deformation::internal::shift_invert_shift(mass);
 
     report(progress, Progress::FACTORIZATION);
     SparseSPDSolverTraits solver;
-    {
-      Eigen::SparseMatrix<double> shifted = stiffness;
-      for(Eigen::Index i = 0; i < n; ++i)
-        shifted.coeffRef(i, i) -= sigma * mass[i];
-      if(!solver.factor(shifted))
-        return fail("the factorization of the shifted stiffness matrix failed");
-    }
+    if(!solver.factor(Spectral_deformation::internal::shifted_stiffness(stiffness, mass, sigma)))
+      return fail("the factorization of the shifted stiffness matrix failed");
     progress.stage = Progress::ITERATION;
 
     // V holds the M-orthonormal subspace, one block more than the
@@ -496,7 +489,7 @@ private:
     // Relative to the spread of the computed spectrum and the shift, as the
     // residuals reported by the benchmarks.
     const Eigen::VectorXd inverse_sqrt_mass = mass.cwiseSqrt().cwiseInverse();
-    const double sigma = -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
+    const double sigma = Spectral_deformation::internal::shift_invert_shift(mass);
     const double scale = (std::max)(1e-6, 1e3 * m_tolerance) * (eigenvalues.maxCoeff() - sigma);
     for(Eigen::Index i = 0; i < eigenvalues.size(); ++i)
     {

@@ -24,6 +24,25 @@ namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
 
+// The shift of both eigensolvers: negative and small against the low end of
+// the spectrum (the first non-zero eigenvalue of a sphere of the same area is
+// 8 pi / area), so that Q - sigma M is positive definite although Q is
+// singular.
+inline double shift_invert_shift(const Eigen::VectorXd& mass)
+{
+  return -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
+}
+
+// Q - sigma M for the diagonal (lumped) mass matrix M.
+inline Eigen::SparseMatrix<double> shifted_stiffness(const Eigen::SparseMatrix<double>& stiffness,
+                                                     const Eigen::VectorXd& mass, double sigma)
+{
+  Eigen::SparseMatrix<double> shifted = stiffness;
+  for(Eigen::Index i = 0; i < mass.size(); ++i)
+    shifted.coeffRef(i, i) -= sigma * mass[i];
+  return shifted;
+}
+
 // y = (Q - sigma M)^{-1} x, with the factorization done by a sparse SPD
 // solver traits. Spectra's own SymShiftInvert uses a sparse LU, which is
 // far slower on these systems. `after_solve`, when set, is called after
@@ -44,10 +63,7 @@ public:
 
   void set_shift(double sigma)
   {
-    Eigen::SparseMatrix<double> shifted = m_stiffness;
-    for(Eigen::Index i = 0; i < m_mass.size(); ++i)
-      shifted.coeffRef(i, i) -= sigma * m_mass[i];
-    if(!m_solver.factor(shifted))
+    if(!m_solver.factor(shifted_stiffness(m_stiffness, m_mass, sigma)))
       throw std::runtime_error("the factorization of the shifted stiffness matrix failed");
   }
 
@@ -199,7 +215,7 @@ public:
     {
       Op op(stiffness, mass, m_progress_callback ? &after_solve : nullptr);
       Mass_op mass_op(mass);
-      const double sigma = -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
+      const double sigma = Spectral_deformation::internal::shift_invert_shift(mass);
       Spectra::SymGEigsShiftSolver<Op, Mass_op, Spectra::GEigsMode::ShiftInvert> solver(
           op, mass_op, m, ncv, sigma);
       // The factorization happens in the constructor of the solver; the
