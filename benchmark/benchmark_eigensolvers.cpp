@@ -78,6 +78,7 @@ struct Options
   int large_repetitions = 2;
   std::size_t large_vertices = 200000;
   bool deformation = true;
+  bool check = false;
   std::string output;
   std::string note;
 };
@@ -93,6 +94,10 @@ void print_usage(const char* program)
       << "  --large-repetitions N      on meshes above --large-vertices (default 2)\n"
       << "  --large-vertices N         (default 200000)\n"
       << "  --no-deformation           skip the deformation comparison\n"
+      << "  --check                    exit with a failure when the fast basis is not accurate:\n"
+      << "                             eigenvalue relative errors above 1e-8, M-orthonormality\n"
+      << "                             error above 1e-9, residual above 1e-6, deformation\n"
+      << "                             deviation above 1e-5 of the bounding-box diagonal\n"
       << "  --mesh-directory DIR       (default " SSMD_BENCHMARK_DEFAULT_MESH_DIR ")\n"
       << "  --case-directory DIR       (default " SSMD_BENCHMARK_DEFAULT_CASE_DIR ")\n"
       << "  --output FILE              also write the markdown report to FILE\n"
@@ -142,6 +147,8 @@ bool parse(int argc, char** argv, Options& options)
       options.large_vertices = static_cast<std::size_t>(std::stoul(value()));
     else if(arg == "--no-deformation")
       options.deformation = false;
+    else if(arg == "--check")
+      options.check = true;
     else if(arg == "--mesh-directory")
       options.mesh_directory = value();
     else if(arg == "--case-directory")
@@ -309,6 +316,27 @@ Row run_case(const Deformation_case& c, const std::string& label, Eigen::Index m
   return row;
 }
 
+// The accuracy asked of the fast basis by --check: the measured values
+// (benchmark/results/eigensolvers.md) are orders of magnitude below; the
+// deformation deviation allowed by the package's goal is 1e-3.
+std::vector<std::string> accuracy_failures(const std::vector<Row>& rows)
+{
+  std::vector<std::string> failures;
+  for(const Row& r : rows)
+  {
+    const std::string where = r.mesh + ", m = " + std::to_string(r.m) + ": ";
+    if(!(r.max_eigenvalue_error <= 1e-8))
+      failures.push_back(where + "eigenvalue relative error " + scientific(r.max_eigenvalue_error));
+    if(!(r.fast_orthonormality <= 1e-9))
+      failures.push_back(where + "M-orthonormality error " + scientific(r.fast_orthonormality));
+    if(!(r.fast_residual <= 1e-6))
+      failures.push_back(where + "residual " + scientific(r.fast_residual));
+    if(r.deformed && !(r.deviation <= 1e-5))
+      failures.push_back(where + "deformation deviation " + scientific(r.deviation) + " D");
+  }
+  return failures;
+}
+
 std::string report(const Options& options, const std::vector<Row>& rows, double total_seconds,
                    double load_start)
 {
@@ -408,6 +436,15 @@ int main(int argc, char** argv)
       out << text;
       if(!out)
         throw std::runtime_error("cannot write " + options.output);
+    }
+    if(options.check)
+    {
+      const std::vector<std::string> failures = accuracy_failures(rows);
+      for(const std::string& failure : failures)
+        std::cerr << "check failed: " << failure << "\n";
+      if(!failures.empty())
+        return EXIT_FAILURE;
+      std::cerr << "check passed: the fast basis is within the accuracy asked of it\n";
     }
   }
   catch(const std::exception& e)
