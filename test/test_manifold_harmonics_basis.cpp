@@ -286,13 +286,14 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
 }
 
 #ifdef CGAL_SSMD_USE_CHOLMOD
-TEST_CASE("CHOLMOD solver traits: solves with reused work arrays match a simplicial LDLT",
-          "[basis][solver]")
+TEMPLATE_TEST_CASE("CHOLMOD solver traits: solves with reused work arrays match a simplicial LDLT",
+                   "[basis][solver]", CGAL::Cholmod_sparse_spd_solver_traits,
+                   CGAL::Cholmod_simplicial_sparse_spd_solver_traits)
 {
   const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(20));
   const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
   const Eigen::SparseMatrix<double> M = CGAL::lumped_mass_matrix(mesh);
-  CGAL::Cholmod_sparse_spd_solver_traits solver;
+  TestType solver;
   Eigen::MatrixXd X;
   CHECK_FALSE(solver.solve(Eigen::MatrixXd::Ones(Q.rows(), 1), X)); // nothing factored
 

@@ -35,7 +35,7 @@ namespace internal {
 ///   the constrained vertices), factored once per mesh (`prepare_soft()`);
 /// - exact: a Dirichlet problem with prescribed vertices, factored once per
 ///   set of prescribed vertices; they keep their prescribed positions exactly.
-template <class SparseSPDSolverTraits = Default_sparse_spd_solver_traits>
+template <class SparseSPDSolverTraits = Default_deformation_sparse_spd_solver_traits>
 class Detail_transfer
 {
 public:
