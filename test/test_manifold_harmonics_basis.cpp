@@ -285,6 +285,52 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
   CHECK_FALSE(block.compute(Q, mass, Q.rows() + 1, values, vectors));
 }
 
+TEST_CASE("block Lanczos: the constants of each component are deflated, only for a Laplacian",
+          "[basis][block_lanczos]")
+{
+  const Surface_mesh spheres = to_mesh<Surface_mesh>(two_spheres(3));
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(spheres);
+  const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(spheres).diagonal();
+  const CGAL::Spectral_deformation::internal::Laplacian_null_space null_space(Q, mass);
+  REQUIRE(null_space.dimension() == 2);
+  const Eigen::MatrixXd constants = null_space.basis();
+  CHECK((constants.transpose() * mass.asDiagonal() * constants - Eigen::MatrixXd::Identity(2, 2))
+            .cwiseAbs()
+            .maxCoeff() < 1e-14);
+  CHECK((Q * constants).cwiseAbs().maxCoeff() < 1e-12 * Q.diagonal().maxCoeff());
+  Eigen::MatrixXd x = Eigen::MatrixXd::Random(Q.rows(), 3);
+  null_space.project_out(x);
+  CHECK((constants.transpose() * mass.asDiagonal() * x).cwiseAbs().maxCoeff() < 1e-13);
+
+  CGAL::Block_lanczos_eigensolver_traits<> block(1e-10, 4, 200, 0);
+  block.set_reference_fallback(false);
+  Eigen::VectorXd values;
+  Eigen::MatrixXd vectors;
+  // As many frequencies as components: the known constants, without a solve.
+  std::size_t solves = 0;
+  block.set_progress_callback(
+      [&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) { solves = p.solves; });
+  REQUIRE(block.compute(Q, mass, 2, values, vectors));
+  CHECK(solves == 0);
+  CHECK(values.cwiseAbs().maxCoeff() == 0);
+  CHECK((vectors - constants).cwiseAbs().maxCoeff() < 1e-14);
+
+  // Q + M is not a Laplacian (its rows do not sum to zero): nothing is
+  // deflated, and its spectrum is the Laplacian's moved by one.
+  Eigen::SparseMatrix<double> shifted = Q;
+  for(Eigen::Index i = 0; i < Q.rows(); ++i)
+    shifted.coeffRef(i, i) += mass[i];
+  CHECK(CGAL::Spectral_deformation::internal::Laplacian_null_space(shifted, mass).dimension() == 0);
+  Eigen::VectorXd dense_values, shifted_values;
+  Eigen::MatrixXd dense_vectors;
+  std::string message;
+  REQUIRE(CGAL::Spectral_deformation::internal::dense_generalized_eigenpairs(
+      Q, mass, 12, dense_values, dense_vectors, message));
+  REQUIRE(block.compute(shifted, mass, 12, shifted_values, vectors));
+  CHECK((shifted_values - dense_values - Eigen::VectorXd::Ones(12)).cwiseAbs().maxCoeff() <
+        1e-8 * dense_values.maxCoeff());
+}
+
 #ifdef CGAL_SSMD_USE_CHOLMOD
 TEMPLATE_TEST_CASE("CHOLMOD solver traits: solves with reused work arrays match a simplicial LDLT",
                    "[basis][solver]", CGAL::Cholmod_sparse_spd_solver_traits,

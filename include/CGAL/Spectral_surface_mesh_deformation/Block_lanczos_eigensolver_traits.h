@@ -11,6 +11,7 @@
 #include <CGAL/Spectral_surface_mesh_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Dense_products.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/dense_eigenpairs.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Laplacian_null_space.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Large_array.h>
 
 #include <Eigen/Dense>
@@ -77,7 +78,7 @@ namespace CGAL {
 /// \tparam SparseSPDSolverTraits a model of `SparseSPDSolverTraits`, used to
 ///         factor `Q - sigma M`; its `solve()` receives `block_size()`
 ///         right-hand sides at a time.
-template <class SparseSPDSolverTraits = Default_sparse_spd_solver_traits>
+template <class SparseSPDSolverTraits = Default_eigensolver_sparse_spd_solver_traits>
 class Block_lanczos_eigensolver_traits
 {
 public:
@@ -259,9 +260,26 @@ private:
                Eigen::Index m, Eigen::Index b, Eigen::Index max_dimension, Progress& progress,
                bool& converged_in_time, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors)
   {
-    using Spectral_deformation::internal::dense_product;
+    using Spectral_deformation::internal::threaded_dense_product;
+    using Spectral_deformation::internal::prefault;
+    const Spectral_deformation::internal::Single_threaded_blas single_threaded_blas;
     const Eigen::Index n = stiffness.rows();
     const double sigma = Spectral_deformation::internal::shift_invert_shift(mass);
+
+    // The constants of each component are eigenvectors of the eigenvalue 0,
+    // known in closed form. Kept out of the Krylov subspace, they no longer
+    // dominate it: their shift-inverted eigenvalue 1 / |sigma| is thousands
+    // of times the wanted ones, and its rounding errors would be what
+    // destroys the orthogonality of the Lanczos vectors first.
+    const Spectral_deformation::internal::Laplacian_null_space null_space(stiffness, mass);
+    const Eigen::Index known = (std::min)(null_space.dimension(), m);
+    const Eigen::Index wanted = m - known;
+    if(wanted == 0)
+    {
+      eigenvalues = Eigen::VectorXd::Zero(m);
+      eigenvectors = null_space.basis().leftCols(m);
+      return true;
+    }
 
     report(progress, Progress::FACTORIZATION);
     SparseSPDSolverTraits solver;
@@ -270,16 +288,21 @@ private:
     progress.stage = Progress::ITERATION;
 
     // V holds the M-orthonormal subspace, one block more than the
-    // Rayleigh-Ritz dimension; T = Vᵀ M (Q - sigma M)^{-1} M V, filled on
-    // and above its block diagonal by the orthogonalization and below by
+    // Rayleigh-Ritz dimension; T = Vᵀ M (Q - sigma M)^{-1} M V is block
+    // tridiagonal: its diagonal and upper blocks come from the
+    // orthogonalization against the last two blocks, its lower blocks from
     // the normalization of each new block.
     Spectral_deformation::internal::Large_array<double> V_storage(
         static_cast<std::size_t>(n) * static_cast<std::size_t>(max_dimension + b));
     Eigen::Map<Matrix> V(V_storage.data(), n, max_dimension + b);
-    // T grows with the subspace (it would be 8 m squared at full size).
-    Matrix T = Matrix::Zero((std::min)(max_dimension + b, round_up(4 * m, b) + b),
-                            (std::min)(max_dimension + b, round_up(4 * m, b) + b));
+    // T and the estimates of Vᵀ M V (`orthogonality`, upper blocks only)
+    // grow with the subspace (they would be 8 m squared at full size).
+    const Eigen::Index initial_size = (std::min)(max_dimension + b, round_up(4 * m, b) + b);
+    Matrix T = Matrix::Zero(initial_size, initial_size);
+    Matrix orthogonality = Matrix::Zero(initial_size, initial_size);
     Matrix block(n, b), weighted(n, b), coefficients(max_dimension + b, b), scratch(n, b);
+    for(Matrix* work : {&block, &weighted, &scratch})
+      prefault(work->data(), sizeof(double) * static_cast<std::size_t>(work->size()));
 
     std::mt19937 generator(20080806u);
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -289,27 +312,25 @@ private:
           target(i, j) = uniform(generator);
     };
 
-    // Makes `block` M-orthogonal to the k leading columns of V and adds the
-    // coefficients to `added` (when given). The operator is self-adjoint, so
-    // in exact arithmetic its image of the last block only has components
-    // along the last two blocks (the block three-term recurrence): a first
-    // pass against those removes almost all of it cheaply, a second pass
-    // against all k columns then removes what rounding left ("twice is
-    // enough", the first time being the local pass). A random block has no
-    // such structure and gets two full passes.
-    auto orthogonalize = [&](Eigen::Index k, Matrix* added) {
-      for(int pass = 0; pass < 2; ++pass)
-      {
-        const Eigen::Index first =
-            (pass == 0 && added != nullptr) ? (std::max)(Eigen::Index(0), k - 2 * b) : 0;
-        const Eigen::Index count = k - first;
-        weighted = mass.asDiagonal() * block;
-        auto h = coefficients.topRows(count);
-        dense_product(true, V.middleCols(first, count), false, weighted, 1.0, 0.0, h);
-        dense_product(false, V.middleCols(first, count), false, h, -1.0, 1.0, block);
-        if(added != nullptr)
-          added->middleRows(first, count) += h;
-      }
+    // One pass of classical Gram-Schmidt: makes `block` M-orthogonal to the
+    // columns [first, k) of V and adds the coefficients to the rows
+    // [first, k) of `added` (when given).
+    auto project_out = [&](Eigen::Index first, Eigen::Index k, Matrix* added) {
+      const Eigen::Index count = k - first;
+      if(count <= 0)
+        return;
+      weighted = mass.asDiagonal() * block;
+      auto h = coefficients.topRows(count);
+      threaded_dense_product(true, V.middleCols(first, count), false, weighted, 1.0, 0.0, h);
+      threaded_dense_product(false, V.middleCols(first, count), false, h, -1.0, 1.0, block);
+      if(added != nullptr)
+        added->middleRows(first, count) += h;
+    };
+    // Twice against all k columns: for a block with no relation to V.
+    auto orthogonalize = [&](Eigen::Index k) {
+      null_space.project_out(block);
+      project_out(0, k, nullptr);
+      project_out(0, k, nullptr);
     };
     const Eigen::VectorXd sqrt_mass = mass.cwiseSqrt();
     const Eigen::VectorXd inverse_sqrt_mass = sqrt_mass.cwiseInverse();
@@ -321,7 +342,7 @@ private:
       {
         weighted = mass.asDiagonal() * block;
         Matrix gram(b, b);
-        dense_product(true, block, false, weighted, 1.0, 0.0, gram);
+        threaded_dense_product(true, block, false, weighted, 1.0, 0.0, gram);
         Eigen::LLT<Matrix> cholesky(gram);
         if(cholesky.info() != Eigen::Success)
           return false;
@@ -332,7 +353,7 @@ private:
           return false;
         const Matrix inverse = upper.template triangularView<Eigen::Upper>().solve(
             Matrix::Identity(b, b));
-        dense_product(false, block, false, inverse, 1.0, 0.0, scratch);
+        threaded_dense_product(false, block, false, inverse, 1.0, 0.0, scratch);
         block.swap(scratch);
         R = upper * R;
         // It loses orthogonality like cond(block)² eps: a second pass is
@@ -366,25 +387,75 @@ private:
           block(i, j) = uniform(generator);
         coupling.row(j).setZero();
       }
-      orthogonalize(k, nullptr);
+      orthogonalize(k);
       Matrix correction;
       if(!cholesky_qr(correction))
         throw std::runtime_error("could not extend the Krylov subspace with new directions");
       R = correction * coupling;
       return rank == b;
     };
-    // A new random block M-orthogonal to the k leading columns of V.
-    auto fresh_block = [&](Eigen::Index k, Matrix& R) -> bool {
-      randomize(block);
-      if(k > 0)
-        orthogonalize(k, nullptr);
-      return normalize(k, R);
+
+    // Partial reorthogonalization (Simon 1984, in block form): the new block
+    // is orthogonalized against the last two blocks only, which the block
+    // three-term recurrence makes sufficient in exact arithmetic, while a
+    // recurrence driven by T estimates how far rounding has carried it from
+    // the older blocks. When that estimate passes sqrt(eps), the new block
+    // and the next are orthogonalized against the whole subspace. Keeping
+    // V orthogonal to sqrt(eps) is enough for T to be, up to rounding, the
+    // projection of the operator on the subspace (no spurious copies of the
+    // converged eigenvalues); the Ritz vectors are made orthonormal at the
+    // end. Each reorthogonalization reads the whole subspace twice, the
+    // most expensive step of a full reorthogonalization at every block.
+    const double eps = std::numeric_limits<double>::epsilon();
+    const double semi_orthogonality = std::sqrt(eps);
+    double operator_norm = 0;
+    auto T_block = [&](Eigen::Index i, Eigen::Index j) { return T.block(i * b, j * b, b, b); };
+    auto W_block = [&](Eigen::Index i, Eigen::Index j) {
+      return orthogonality.block(i * b, j * b, b, b);
+    };
+    // Estimates the blocks (i, J + 1) of Vᵀ M V for i < J from those of the
+    // columns J and J - 1 and the blocks of T; the new block J + 1 has been
+    // orthogonalized against J - 1 and J. Returns the largest estimate.
+    auto estimate_orthogonality = [&](Eigen::Index J, const Matrix& R) -> double {
+      const Matrix identity = Matrix::Identity(b, b);
+      const Matrix A_J = 0.5 * (T_block(J, J) + T_block(J, J).transpose());
+      operator_norm = (std::max)(operator_norm, A_J.norm() + R.norm());
+      const auto inverse_R = R.template triangularView<Eigen::Upper>();
+      double largest = 0;
+      for(Eigen::Index i = 0; i < J; ++i)
+      {
+        const Matrix A_i = 0.5 * (T_block(i, i) + T_block(i, i).transpose());
+        Matrix estimate = A_i * W_block(i, J) - W_block(i, J) * A_J;
+        if(i > 0)
+          estimate += T_block(i, i - 1) * W_block(i - 1, J);
+        estimate += T_block(i + 1, i).transpose() * (i + 1 == J ? identity : Matrix(W_block(i + 1, J)));
+        if(J > 0)
+          estimate -= (i == J - 1 ? identity : Matrix(W_block(i, J - 1))) * T_block(J, J - 1).transpose();
+        // The rounding of one step, with the sign that makes it grow.
+        estimate = estimate.unaryExpr([&](double x) { return x + (x < 0 ? -eps : eps) * operator_norm; });
+        estimate = inverse_R.template solve<Eigen::OnTheRight>(estimate);
+        W_block(i, J + 1) = estimate;
+        largest = (std::max)(largest, estimate.cwiseAbs().maxCoeff());
+      }
+      W_block(J, J + 1).setConstant(eps);
+      W_block(J + 1, J + 1).setIdentity();
+      return largest;
+    };
+    auto reset_orthogonality = [&](Eigen::Index J) {
+      W_block(J + 1, J + 1).setIdentity();
+      for(Eigen::Index i = 0; i <= J; ++i)
+        W_block(i, J + 1).setConstant(eps);
     };
 
     Matrix R;
-    fresh_block(0, R);
+    randomize(block);
+    orthogonalize(0);
+    normalize(0, R);
     V.leftCols(b) = block;
+    W_block(0, 0).setIdentity();
     bool breakdown = false;
+    bool reorthogonalize_next = false;
+    std::size_t reorthogonalizations = 0;
 
     // Each Rayleigh-Ritz check costs a dense k × k eigendecomposition: the
     // checks start where convergence is plausible and are spaced by about
@@ -392,8 +463,9 @@ private:
     Eigen::Index next_check = (std::max)(m + b, round_up((3 * m) / 2, b));
     for(Eigen::Index k = b;; k += b)
     {
+      const Eigen::Index J = k / b - 1;
       // The block V(:, k - b .. k) enters the operator; its image is
-      // orthogonalized against the k columns so far.
+      // orthogonalized against the last two blocks, twice.
       weighted = mass.asDiagonal() * V.middleCols(k - b, b);
       if(!solver.solve(weighted, block))
         return fail("a solve with the factored shifted stiffness matrix failed");
@@ -405,14 +477,38 @@ private:
       {
         const Eigen::Index size = (std::min)(max_dimension + b, 2 * T.rows());
         T.conservativeResizeLike(Matrix::Zero(size, size));
+        orthogonality.conservativeResizeLike(Matrix::Zero(size, size));
       }
+      null_space.project_out(block);
       Matrix column_block = Matrix::Zero(k, b);
-      orthogonalize(k, &column_block);
+      const Eigen::Index local = (std::max)(Eigen::Index(0), k - 2 * b);
+      project_out(local, k, &column_block);
+      project_out(local, k, &column_block);
       T.block(0, k - b, k, b) = column_block;
-      // A block that lacked directions was completed: T stays exact, and the
-      // residuals are verified on the result.
+      // A block that lacked directions was completed against the whole
+      // subspace: T stays exact, and the residuals are verified on the
+      // result.
       if(!normalize(k, R))
+      {
         breakdown = true;
+        reorthogonalize_next = true;
+        reset_orthogonality(J);
+      }
+      else if(estimate_orthogonality(J, R) > semi_orthogonality || reorthogonalize_next)
+      {
+        // block = V h + Q' R': the coupling of the new block becomes R' R,
+        // and the coefficients h, of the order of sqrt(eps), are left out of
+        // T as in the Lanczos recurrence.
+        project_out(0, k, nullptr);
+        null_space.project_out(block);
+        Matrix correction;
+        if(!cholesky_qr(correction))
+          throw std::runtime_error("the reorthogonalized Lanczos block is rank deficient");
+        R = correction * R;
+        reorthogonalize_next = !reorthogonalize_next;
+        reset_orthogonality(J);
+        ++reorthogonalizations;
+      }
       V.middleCols(k, b) = block;
       T.block(k, k - b, b, b) = R;
 
@@ -426,7 +522,7 @@ private:
         return fail("the Rayleigh-Ritz eigensolver did not converge");
       // Largest theta first: the smallest lambda.
       std::size_t converged = 0;
-      for(Eigen::Index i = 0; i < m; ++i)
+      for(Eigen::Index i = 0; i < wanted; ++i)
       {
         const Eigen::Index column = k - 1 - i;
         const double theta = ritz.eigenvalues()[column];
@@ -434,19 +530,32 @@ private:
         if(residual <= m_tolerance * std::abs(theta))
           ++converged;
       }
-      progress.converged_eigenpairs = converged;
-      if(converged == static_cast<std::size_t>(m))
+      progress.converged_eigenpairs = converged + static_cast<std::size_t>(known);
+      if(converged == static_cast<std::size_t>(wanted))
       {
-        Matrix selected(k, m);
-        eigenvalues.resize(m);
-        for(Eigen::Index i = 0; i < m; ++i)
-        {
-          const Eigen::Index column = k - 1 - i;
-          selected.col(i) = ritz.eigenvectors().col(column);
-          eigenvalues[i] = sigma + 1.0 / ritz.eigenvalues()[column];
-        }
+        Matrix selected(k, wanted);
+        for(Eigen::Index i = 0; i < wanted; ++i)
+          selected.col(i) = ritz.eigenvectors().col(k - 1 - i);
         eigenvectors.resize(n, m);
-        dense_product(false, V.leftCols(k), false, selected, 1.0, 0.0, eigenvectors);
+        prefault(eigenvectors.data(), sizeof(double) * static_cast<std::size_t>(eigenvectors.size()));
+        eigenvectors.leftCols(known) = null_space.basis().leftCols(known);
+        auto ritz_vectors = eigenvectors.rightCols(wanted);
+        threaded_dense_product(false, V.leftCols(k), false, selected, 1.0, 0.0, ritz_vectors);
+        eigenvalues.resize(m);
+        eigenvalues.head(known).setZero();
+        for(Eigen::Index i = 0; i < wanted; ++i)
+          eigenvalues[known + i] = sigma + 1.0 / ritz.eigenvalues()[k - 1 - i];
+        // V is no longer needed: its memory, already mapped, is the
+        // workspace of the Rayleigh-Ritz step when it is large enough.
+        Matrix workspace;
+        double* work = V_storage.data();
+        if(2 * wanted > max_dimension + b)
+        {
+          workspace.resize(n, 2 * wanted);
+          work = workspace.data();
+        }
+        if(reorthogonalizations > 0 || breakdown)
+          rayleigh_ritz(stiffness, mass, ritz_vectors, eigenvalues.tail(wanted), work);
         if(breakdown && !verify(stiffness, mass, eigenvalues, eigenvectors))
           return fail("the eigenpairs found after a deflation of the Krylov subspace do not "
                       "satisfy the tolerance");
@@ -455,11 +564,47 @@ private:
       if(k + b > max_dimension)
       {
         converged_in_time = false;
-        return fail(std::to_string(converged) + " of the " + std::to_string(m) +
+        return fail(std::to_string(converged + static_cast<std::size_t>(known)) + " of the " +
+                    std::to_string(m) +
                     " eigenpairs converged within the maximum subspace dimension " +
                     std::to_string(max_dimension));
       }
     }
+  }
+
+  // The Ritz vectors of a subspace orthogonal only to sqrt(eps) are
+  // orthonormal to the same level: a Rayleigh-Ritz step with Q and M on
+  // their span makes them M-orthonormal to rounding, at a cost of a few
+  // n m² products (skipped when they already are).
+  template <class Vectors, class Values>
+  static void rayleigh_ritz(const Eigen::SparseMatrix<double>& stiffness,
+                            const Eigen::VectorXd& mass, Vectors&& vectors, Values&& values,
+                            double* workspace)
+  {
+    using Spectral_deformation::internal::threaded_dense_product;
+    const Eigen::Index n = vectors.rows(), count = vectors.cols();
+    Eigen::Map<Matrix> weighted(workspace, n, count), copy(workspace + n * count, n, count);
+    weighted = mass.asDiagonal() * vectors;
+    Matrix gram(count, count);
+    threaded_dense_product(true, vectors, false, weighted, 1.0, 0.0, gram);
+    if((gram - Matrix::Identity(count, count)).cwiseAbs().maxCoeff() <= 1e-13)
+      return;
+    Eigen::LLT<Matrix> cholesky(gram);
+    if(cholesky.info() != Eigen::Success)
+      return;
+    // vectors U^{-1}, with gram = UᵀU, is M-orthonormal.
+    const Matrix inverse_upper = cholesky.matrixU().solve(Matrix::Identity(count, count));
+    copy = vectors;
+    threaded_dense_product(false, copy, false, inverse_upper, 1.0, 0.0, vectors);
+    weighted.noalias() = stiffness * vectors;
+    Matrix projected(count, count);
+    threaded_dense_product(true, vectors, false, weighted, 1.0, 0.0, projected);
+    Eigen::SelfAdjointEigenSolver<Matrix> small(0.5 * (projected + projected.transpose()));
+    if(small.info() != Eigen::Success)
+      return;
+    copy = vectors;
+    threaded_dense_product(false, copy, false, small.eigenvectors(), 1.0, 0.0, vectors);
+    values = small.eigenvalues();
   }
 
   // Spectra_eigensolver_traits with the same tolerance; its solves are

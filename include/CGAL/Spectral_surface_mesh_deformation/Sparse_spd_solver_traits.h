@@ -12,6 +12,10 @@
 
 #include <cstddef>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #ifdef CGAL_SSMD_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
 #endif
@@ -126,11 +130,16 @@ public:
   {
     m_solver.setMode(Form == CHOLMOD_SUPERNODAL_FACTOR ? Eigen::CholmodSupernodalLLt
                                                        : Eigen::CholmodSimplicialLLt);
+    cholmod_start(&m_second_common);
   }
   // A CHOLMOD factor has a single owner, as in Eigen's wrapper.
   Cholmod_llt_solver_traits(const Cholmod_llt_solver_traits&) = delete;
   Cholmod_llt_solver_traits& operator=(const Cholmod_llt_solver_traits&) = delete;
-  ~Cholmod_llt_solver_traits() { release_work_arrays(); }
+  ~Cholmod_llt_solver_traits()
+  {
+    release_work_arrays();
+    cholmod_finish(&m_second_common);
+  }
 
   /// Factors the symmetric positive definite matrix `A` (both triangles
   /// stored). Returns `false` when the factorization fails.
@@ -163,22 +172,26 @@ public:
     }
     if(B.rows() != static_cast<Eigen::Index>(m_solver.factor()->n))
       return false;
-    cholmod_dense right_hand_side;
-    right_hand_side.nrow = static_cast<std::size_t>(B.rows());
-    right_hand_side.ncol = static_cast<std::size_t>(B.cols());
-    right_hand_side.nzmax = static_cast<std::size_t>(B.size());
-    right_hand_side.d = static_cast<std::size_t>(B.rows());
-    right_hand_side.x = const_cast<double*>(B.data()); // read only by cholmod_solve2
-    right_hand_side.z = nullptr;
-    right_hand_side.xtype = CHOLMOD_REAL;
-    right_hand_side.dtype = CHOLMOD_DOUBLE;
-    if(!cholmod_solve2(CHOLMOD_A, m_solver.factor(), &right_hand_side, nullptr, &m_solution,
-                       nullptr, &m_work_y, &m_work_e, &m_solver.cholmod()) ||
-       m_solution == nullptr)
-      return false;
-    X = Eigen::Map<const Dense_matrix>(static_cast<const double*>(m_solution->x), B.rows(),
-                                       B.cols());
-    return X.allFinite();
+    X.resize(B.rows(), B.cols());
+    // A simplicial factor is solved column by column without the BLAS: two
+    // threads each solve half of the right-hand sides against the shared,
+    // read-only factor, with their own CHOLMOD workspace (1.45× with 8
+    // right-hand sides on a 104k-vertex mesh; the supernodal solve, which
+    // calls the BLAS, was slower that way).
+    const Eigen::Index halves =
+        (Form == CHOLMOD_SIMPLICIAL_FACTOR && B.cols() >= 2 && concurrent_threads() >= 2) ? 2 : 1;
+    bool success[2] = {true, true};
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(2) if(halves == 2)
+#endif
+    for(int half = 0; half < static_cast<int>(halves); ++half)
+    {
+      const Eigen::Index first = B.cols() * half / halves;
+      const Eigen::Index count = B.cols() * (half + 1) / halves - first;
+      success[half] = solve_columns(B, first, count, X, m_work[half],
+                                    half == 0 ? &m_solver.cholmod() : &m_second_common);
+    }
+    return success[0] && success[1] && X.allFinite();
   }
 
 private:
@@ -188,17 +201,63 @@ private:
     cholmod_factor* factor() const { return this->m_cholmodFactor; }
   };
 
+  // The solution and the work arrays of cholmod_solve2(), kept between
+  // calls.
+  struct Work_arrays
+  {
+    cholmod_dense* solution = nullptr;
+    cholmod_dense* y = nullptr;
+    cholmod_dense* e = nullptr;
+    void release(cholmod_common* common)
+    {
+      cholmod_free_dense(&solution, common);
+      cholmod_free_dense(&y, common);
+      cholmod_free_dense(&e, common);
+    }
+  };
+
+  static int concurrent_threads()
+  {
+#ifdef _OPENMP
+    return omp_in_parallel() ? 1 : omp_get_max_threads();
+#else
+    return 1;
+#endif
+  }
+
+  // X(:, first .. first + count) = A^{-1} B(:, first .. first + count).
+  bool solve_columns(const Dense_matrix& B, Eigen::Index first, Eigen::Index count,
+                     Dense_matrix& X, Work_arrays& work, cholmod_common* common) const
+  {
+    cholmod_dense right_hand_side;
+    right_hand_side.nrow = static_cast<std::size_t>(B.rows());
+    right_hand_side.ncol = static_cast<std::size_t>(count);
+    right_hand_side.nzmax = static_cast<std::size_t>(B.rows() * count);
+    right_hand_side.d = static_cast<std::size_t>(B.rows());
+    // read only by cholmod_solve2
+    right_hand_side.x = const_cast<double*>(B.data() + B.rows() * first);
+    right_hand_side.z = nullptr;
+    right_hand_side.xtype = CHOLMOD_REAL;
+    right_hand_side.dtype = CHOLMOD_DOUBLE;
+    if(!cholmod_solve2(CHOLMOD_A, m_solver.factor(), &right_hand_side, nullptr, &work.solution,
+                       nullptr, &work.y, &work.e, common) ||
+       work.solution == nullptr)
+      return false;
+    X.middleCols(first, count) =
+        Eigen::Map<const Dense_matrix>(static_cast<const double*>(work.solution->x), B.rows(), count);
+    return true;
+  }
+
   void release_work_arrays()
   {
-    cholmod_free_dense(&m_solution, &m_solver.cholmod());
-    cholmod_free_dense(&m_work_y, &m_solver.cholmod());
-    cholmod_free_dense(&m_work_e, &m_solver.cholmod());
+    m_work[0].release(&m_solver.cholmod());
+    m_work[1].release(&m_second_common);
   }
 
   mutable Factorization m_solver;
-  mutable cholmod_dense* m_solution = nullptr;
-  mutable cholmod_dense* m_work_y = nullptr;
-  mutable cholmod_dense* m_work_e = nullptr;
+  // The workspace of the second thread of a simplicial solve.
+  mutable cholmod_common m_second_common;
+  mutable Work_arrays m_work[2];
   bool m_factored = false;
   bool m_empty = false;
 };
@@ -244,6 +303,16 @@ typedef Cholmod_simplicial_sparse_spd_solver_traits Default_deformation_sparse_s
 typedef Eigen_sparse_spd_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>
     Default_deformation_sparse_spd_solver_traits;
 #endif
+
+/// \ingroup PkgSpectralSurfaceMeshDeformationTraits
+/// The default model of `SparseSPDSolverTraits` of
+/// `Block_lanczos_eigensolver_traits` (one factorization, then solves with
+/// eight right-hand sides): the same as
+/// `Default_deformation_sparse_spd_solver_traits`. With eight right-hand
+/// sides split over two threads, the simplicial factor was measured faster
+/// than the supernodal one on the 104k-vertex armadillo (factorization
+/// 0.45 s against 0.68 s, solve 24 ms against 27 ms).
+typedef Default_deformation_sparse_spd_solver_traits Default_eigensolver_sparse_spd_solver_traits;
 
 } // namespace CGAL
 
