@@ -366,8 +366,11 @@ std::string report(const Options& options, const std::vector<Row>& rows, double 
       << "." << SPECTRA_MINOR_VERSION << "." << SPECTRA_PATCH_VERSION << "\n";
   out << "- Solvers: reference `Spectra_eigensolver_traits<>` (shift-invert Lanczos, tolerance "
          "1e-10, ncv = max(2m + 1, m + 20)); fast `Block_lanczos_eigensolver_traits<>` "
-         "(tolerance 1e-10, blocks of max(8, m/32), no restart), both with the default "
-         "sparse solver\n\n";
+         "(tolerance 1e-10, blocks of max(8, m/32), no restart, partial reorthogonalization, "
+         "constants deflated), each with its default sparse solver: the reference CHOLMOD's "
+         "supernodal factor, the block method its simplicial factor with the right-hand sides "
+         "split over the threads, and OpenBLAS set to one thread during its solve (its tall "
+         "products are split by OpenMP)\n\n";
 
   out << "| mesh | n | m | reference | block Lanczos | speed-up | max rel. error λ | median rel. "
          "error λ | largest principal angle | max abs(HᵀMH − I) ref / fast | max residual ref / "
