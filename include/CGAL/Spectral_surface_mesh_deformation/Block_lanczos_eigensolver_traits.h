@@ -578,8 +578,9 @@ private:
           workspace.resize(n, 2 * wanted);
           work = workspace.data();
         }
-        if(reorthogonalizations > 0 || breakdown)
-          rayleigh_ritz(stiffness, mass, ritz_vectors, eigenvalues.tail(wanted), work);
+        if((reorthogonalizations > 0 || breakdown) &&
+           !rayleigh_ritz(stiffness, mass, ritz_vectors, eigenvalues.tail(wanted), work))
+          return fail("the final Rayleigh-Ritz step failed: the Ritz vectors are not independent");
         if(breakdown && !verify(stiffness, mass, eigenvalues, eigenvectors))
           return fail("the eigenpairs found after a deflation of the Krylov subspace do not "
                       "satisfy the tolerance");
@@ -599,9 +600,10 @@ private:
   // The Ritz vectors of a subspace orthogonal only to sqrt(eps) are
   // orthonormal to the same level: a Rayleigh-Ritz step with Q and M on
   // their span makes them M-orthonormal to rounding, at a cost of a few
-  // n m² products (skipped when they already are).
+  // n m² products (skipped when they already are). Returns false when the
+  // vectors are not independent or the small eigensolver fails.
   template <class Vectors, class Values>
-  static void rayleigh_ritz(const Eigen::SparseMatrix<double>& stiffness,
+  static bool rayleigh_ritz(const Eigen::SparseMatrix<double>& stiffness,
                             const Eigen::VectorXd& mass, Vectors&& vectors, Values&& values,
                             double* workspace)
   {
@@ -612,10 +614,10 @@ private:
     Matrix gram(count, count);
     threaded_dense_product(true, vectors, false, weighted, 1.0, 0.0, gram);
     if((gram - Matrix::Identity(count, count)).cwiseAbs().maxCoeff() <= 1e-13)
-      return;
+      return true;
     Eigen::LLT<Matrix> cholesky(gram);
     if(cholesky.info() != Eigen::Success)
-      return;
+      return false;
     // vectors U^{-1}, with gram = UᵀU, is M-orthonormal.
     const Matrix inverse_upper = cholesky.matrixU().solve(Matrix::Identity(count, count));
     copy = vectors;
@@ -625,10 +627,11 @@ private:
     threaded_dense_product(true, vectors, false, weighted, 1.0, 0.0, projected);
     Eigen::SelfAdjointEigenSolver<Matrix> small(0.5 * (projected + projected.transpose()));
     if(small.info() != Eigen::Success)
-      return;
+      return false;
     copy = vectors;
     threaded_dense_product(false, copy, false, small.eigenvectors(), 1.0, 0.0, vectors);
     values = small.eigenvalues();
+    return true;
   }
 
   // Spectra_eigensolver_traits with the same tolerance; its solves are

@@ -95,15 +95,15 @@ public:
     if(m_threads > 1)
       openblas_set_num_threads(m_threads);
   }
+#else
+  Single_threaded_blas() = default;
 #endif
   Single_threaded_blas(const Single_threaded_blas&) = delete;
   Single_threaded_blas& operator=(const Single_threaded_blas&) = delete;
 
-private:
 #ifdef CGAL_SSMD_USE_OPENBLAS
+private:
   int m_threads;
-#else
-  int m_unused = 0;
 #endif
 };
 

@@ -100,8 +100,8 @@ public:
       std::fill(sums.begin(), sums.end(), 0.0);
       for(Eigen::Index i = 0; i < x.rows(); ++i)
         sums[m_component[i]] += m_mass[i] * x(i, j);
-      for(double& sum : sums)
-        sum /= m_component_mass[&sum - sums.data()];
+      for(std::size_t c = 0; c < sums.size(); ++c)
+        sums[c] /= m_component_mass[c];
       for(Eigen::Index i = 0; i < x.rows(); ++i)
         x(i, j) -= sums[m_component[i]];
     }
