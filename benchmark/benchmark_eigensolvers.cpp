@@ -79,6 +79,7 @@ struct Options
   std::size_t large_vertices = 200000;
   bool deformation = true;
   bool check = false;
+  double tolerance = 0; // 0: the default of Fast_traits
   std::string output;
   std::string note;
 };
@@ -94,6 +95,7 @@ void print_usage(const char* program)
       << "  --large-repetitions N      on meshes above --large-vertices (default 2)\n"
       << "  --large-vertices N         (default 200000)\n"
       << "  --no-deformation           skip the deformation comparison\n"
+      << "  --tolerance T              tolerance of the block Lanczos solver (default: its own)\n"
       << "  --check                    exit with a failure when the fast basis is not accurate:\n"
       << "                             eigenvalue relative errors above 1e-8, M-orthonormality\n"
       << "                             error above 1e-9, residual above 1e-6, deformation\n"
@@ -149,6 +151,8 @@ bool parse(int argc, char** argv, Options& options)
       options.deformation = false;
     else if(arg == "--check")
       options.check = true;
+    else if(arg == "--tolerance")
+      options.tolerance = std::stod(value());
     else if(arg == "--mesh-directory")
       options.mesh_directory = value();
     else if(arg == "--case-directory")
@@ -215,11 +219,12 @@ double largest_residual(const Eigen::SparseMatrix<double>& Q, const Eigen::Vecto
 }
 
 template <class Traits>
-Positions deform(const Deformation_case& c, Eigen::Index m, double& preprocess_seconds,
-                 double& deform_seconds)
+Positions deform(const Deformation_case& c, Eigen::Index m, const Traits& traits,
+                 double& preprocess_seconds, double& deform_seconds)
 {
   Mesh mesh = c.mesh;
   Deformation<Traits> deformation(mesh);
+  deformation.set_eigensolver_traits(traits);
   deformation.set_number_of_frequencies(static_cast<std::size_t>(m));
   deformation.insert_roi_vertices(c.roi.begin(), c.roi.end());
   deformation.insert_control_vertices(c.handles.begin(), c.handles.end());
@@ -233,6 +238,11 @@ Positions deform(const Deformation_case& c, Eigen::Index m, double& preprocess_s
   deformation.deform(10, 0.0);
   deform_seconds = seconds_since(deform_start);
   return positions_of(mesh);
+}
+
+Fast_traits fast_traits(const Options& options)
+{
+  return options.tolerance > 0 ? Fast_traits(options.tolerance) : Fast_traits();
 }
 
 struct Row
@@ -277,7 +287,8 @@ Row run_case(const Deformation_case& c, const std::string& label, Eigen::Index m
     }
     {
       const Clock::time_point start = Clock::now();
-      Fast_basis basis(c.mesh, static_cast<std::size_t>(m));
+      Fast_basis basis(c.mesh, static_cast<std::size_t>(m), CGAL::parameters::default_values(),
+                       fast_traits(options));
       row.fast.seconds.push_back(seconds_since(start));
       if(r == 0)
       {
@@ -305,8 +316,9 @@ Row run_case(const Deformation_case& c, const std::string& label, Eigen::Index m
 
   if(options.deformation)
   {
-    const Positions reference = deform<Reference_traits>(c, m, row.reference_preprocess, row.reference_deform);
-    const Positions fast = deform<Fast_traits>(c, m, row.fast_preprocess, row.fast_deform);
+    const Positions reference =
+        deform(c, m, Reference_traits(), row.reference_preprocess, row.reference_deform);
+    const Positions fast = deform(c, m, fast_traits(options), row.fast_preprocess, row.fast_deform);
     const Positions rest = positions_of(c.mesh);
     const double diagonal = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
     row.deviation = (reference - fast).rowwise().norm().maxCoeff() / diagonal;
@@ -366,7 +378,10 @@ std::string report(const Options& options, const std::vector<Row>& rows, double 
       << "." << SPECTRA_MINOR_VERSION << "." << SPECTRA_PATCH_VERSION << "\n";
   out << "- Solvers: reference `Spectra_eigensolver_traits<>` (shift-invert Lanczos, tolerance "
          "1e-10, ncv = max(2m + 1, m + 20)); fast `Block_lanczos_eigensolver_traits<>` "
-         "(tolerance 1e-10, blocks of max(8, m/32), no restart, partial reorthogonalization, "
+         "(tolerance "
+      << fast_traits(options).tolerance()
+      << (options.tolerance > 0 ? " set by --tolerance" : ", its default")
+      << ", blocks of max(8, m/32), no restart, partial reorthogonalization, "
          "constants deflated), each with its default sparse solver: the reference CHOLMOD's "
          "supernodal factor, the block method its simplicial factor with the right-hand sides "
          "split over the threads, and OpenBLAS set to one thread during its solve (its tall "

@@ -6,6 +6,7 @@ find_dependency(CGAL 5.5)
 find_dependency(Eigen3 3.4 NO_MODULE)
 find_dependency(Boost 1.66)
 find_dependency(spectra 1.0)
+find_dependency(Threads)
 
 # CHOLMOD is optional: when found, sparse SPD factorizations use it instead of
 # Eigen's SimplicialLDLT.

@@ -305,12 +305,6 @@ private:
       return true;
     }
 
-    report(progress, Progress::FACTORIZATION);
-    SparseSPDSolverTraits solver;
-    if(!solver.factor(Spectral_deformation::internal::shifted_stiffness(stiffness, mass, sigma)))
-      return fail("the factorization of the shifted stiffness matrix failed");
-    progress.stage = Progress::ITERATION;
-
     // V holds the M-orthonormal subspace, one block more than the
     // Rayleigh-Ritz dimension; T = Vᵀ M (Q - sigma M)^{-1} M V is block
     // tridiagonal: its diagonal and upper blocks come from the
@@ -319,6 +313,21 @@ private:
     Spectral_deformation::internal::Large_array<double> V_storage(
         static_cast<std::size_t>(n) * static_cast<std::size_t>(max_dimension + b));
     Eigen::Map<Matrix> V(V_storage.data(), n, max_dimension + b);
+    Matrix result(n, m);
+    // The factorization runs on one core: the other maps the result and the
+    // subspace the iteration typically reaches (3 to 4 m columns on the
+    // armadillo meshes) meanwhile.
+    const Eigen::Index typical_columns = (std::min)(max_dimension + b, round_up(3 * m, b) + b);
+    Spectral_deformation::internal::Background_prefault mapping(
+        {{result.data(), sizeof(double) * static_cast<std::size_t>(result.size())},
+         {V_storage.data(),
+          sizeof(double) * static_cast<std::size_t>(n) * static_cast<std::size_t>(typical_columns)}});
+
+    report(progress, Progress::FACTORIZATION);
+    SparseSPDSolverTraits solver;
+    if(!solver.factor(Spectral_deformation::internal::shifted_stiffness(stiffness, mass, sigma)))
+      return fail("the factorization of the shifted stiffness matrix failed");
+    progress.stage = Progress::ITERATION;
     // T and the estimates of Vᵀ M V (`orthogonality`, upper blocks only)
     // grow with the subspace (they would be 8 m squared at full size).
     const Eigen::Index initial_size = (std::min)(max_dimension + b, round_up(4 * m, b) + b);
@@ -560,15 +569,14 @@ private:
         Matrix selected(k, wanted);
         for(Eigen::Index i = 0; i < wanted; ++i)
           selected.col(i) = ritz.eigenvectors().col(k - 1 - i);
-        eigenvectors.resize(n, m);
-        prefault(eigenvectors.data(), sizeof(double) * static_cast<std::size_t>(eigenvectors.size()));
-        eigenvectors.leftCols(known) = null_space.basis().leftCols(known);
-        auto ritz_vectors = eigenvectors.rightCols(wanted);
+        mapping.join();
+        result.leftCols(known) = null_space.basis().leftCols(known);
+        auto ritz_vectors = result.rightCols(wanted);
         threaded_dense_product(false, V.leftCols(k), false, selected, 1.0, 0.0, ritz_vectors);
-        eigenvalues.resize(m);
-        eigenvalues.head(known).setZero();
+        Eigen::VectorXd values(m);
+        values.head(known).setZero();
         for(Eigen::Index i = 0; i < wanted; ++i)
-          eigenvalues[known + i] = sigma + 1.0 / ritz.eigenvalues()[k - 1 - i];
+          values[known + i] = sigma + 1.0 / ritz.eigenvalues()[k - 1 - i];
         // V is no longer needed: its memory, already mapped, is the
         // workspace of the Rayleigh-Ritz step when it is large enough.
         Matrix workspace;
@@ -579,11 +587,13 @@ private:
           work = workspace.data();
         }
         if((reorthogonalizations > 0 || breakdown) &&
-           !rayleigh_ritz(stiffness, mass, ritz_vectors, eigenvalues.tail(wanted), work))
+           !rayleigh_ritz(stiffness, mass, ritz_vectors, values.tail(wanted), work))
           return fail("the final Rayleigh-Ritz step failed: the Ritz vectors are not independent");
-        if(breakdown && !verify(stiffness, mass, eigenvalues, eigenvectors))
+        if(breakdown && !verify(stiffness, mass, values, result))
           return fail("the eigenpairs found after a deflation of the Krylov subspace do not "
                       "satisfy the tolerance");
+        eigenvalues.swap(values);
+        eigenvectors.swap(result);
         return true;
       }
       if(k + b > max_dimension)

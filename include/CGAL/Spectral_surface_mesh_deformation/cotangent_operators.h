@@ -7,11 +7,13 @@
 #ifndef CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_COTANGENT_OPERATORS_H
 #define CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_COTANGENT_OPERATORS_H
 
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Large_array.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
 
 #include <Eigen/Geometry>
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <vector>
 
 namespace CGAL {
@@ -24,10 +26,34 @@ namespace internal {
 /// (no degenerate face), which keeps every cotangent finite.
 inline Eigen::SparseMatrix<double> cotangent_stiffness(const Triangle_arrays& mesh)
 {
+  // Assembled in compressed form directly: each column gathers its entries
+  // (one per incident face edge, and the diagonal), sorts them by row and
+  // merges the two halves of each interior edge. Eigen's triplet assembly
+  // moved four times as much memory and took 0.28 s at 104k vertices.
+  typedef Eigen::SparseMatrix<double>::StorageIndex Index;
   const Eigen::Index n = mesh.number_of_vertices();
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<std::size_t>(mesh.number_of_faces()) * 12);
-  for(Eigen::Index f = 0; f < mesh.number_of_faces(); ++f)
+  const Eigen::Index faces = mesh.number_of_faces();
+  std::vector<Index> start(static_cast<std::size_t>(n) + 1, 0);
+  for(Eigen::Index f = 0; f < faces; ++f)
+    for(int k = 0; k < 3; ++k)
+      start[static_cast<std::size_t>(mesh.triangles(f, k)) + 1] += 2;
+  for(Eigen::Index j = 0; j < n; ++j)
+    start[j + 1] += start[j] + 1; // + 1: the diagonal
+  // Large_array: these temporaries are tens of MiB, in huge pages where
+  // possible (page faults dominated the assembly otherwise).
+  Large_array<Index> row_storage(static_cast<std::size_t>(start[n]));
+  Large_array<double> value_storage(static_cast<std::size_t>(start[n]));
+  Index* rows = row_storage.data();
+  double* values = value_storage.data();
+  std::vector<Index> end(start.begin(), start.end() - 1);
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
+  auto add = [&](int row, int column, double value) {
+    rows[end[column]] = row;
+    values[end[column]++] = value;
+  };
+  for(Eigen::Index j = 0; j < n; ++j)
+    add(static_cast<int>(j), static_cast<int>(j), 0.0);
+  for(Eigen::Index f = 0; f < faces; ++f)
   {
     for(int k = 0; k < 3; ++k)
     {
@@ -38,14 +64,60 @@ inline Eigen::SparseMatrix<double> cotangent_stiffness(const Triangle_arrays& me
       const Eigen::Vector3d u = row_vector(mesh.positions, i) - row_vector(mesh.positions, c);
       const Eigen::Vector3d v = row_vector(mesh.positions, j) - row_vector(mesh.positions, c);
       const double half_cot = 0.5 * u.dot(v) / u.cross(v).norm();
-      entries.emplace_back(i, j, -half_cot);
-      entries.emplace_back(j, i, -half_cot);
-      entries.emplace_back(i, i, half_cot);
-      entries.emplace_back(j, j, half_cot);
+      add(i, j, -half_cot);
+      add(j, i, -half_cot);
+      diagonal[i] += half_cot;
+      diagonal[j] += half_cot;
     }
   }
+  // Sort each column by row (a dozen entries: insertion sort) and merge
+  // duplicates in place; `end` becomes the end of the merged column.
+  Index nonzeros = 0;
+  for(Eigen::Index j = 0; j < n; ++j)
+  {
+    const Index first = start[j], last = end[j];
+    for(Index a = first + 1; a < last; ++a)
+    {
+      const Index row = rows[a];
+      const double value = values[a];
+      Index b = a;
+      for(; b > first && rows[b - 1] > row; --b)
+      {
+        rows[b] = rows[b - 1];
+        values[b] = values[b - 1];
+      }
+      rows[b] = row;
+      values[b] = value;
+    }
+    Index merged = first;
+    for(Index a = first; a < last; ++a)
+    {
+      if(a > first && rows[a] == rows[merged - 1])
+        values[merged - 1] += values[a];
+      else
+      {
+        rows[merged] = rows[a];
+        values[merged++] = values[a];
+      }
+    }
+    end[j] = merged;
+    nonzeros += merged - first;
+  }
   Eigen::SparseMatrix<double> stiffness(n, n);
-  stiffness.setFromTriplets(entries.begin(), entries.end());
+  stiffness.resizeNonZeros(nonzeros);
+  Index* outer = stiffness.outerIndexPtr();
+  outer[0] = 0;
+  for(Eigen::Index j = 0; j < n; ++j)
+  {
+    const Index count = end[j] - start[j];
+    std::copy(rows + start[j], rows + end[j], stiffness.innerIndexPtr() + outer[j]);
+    double* column = stiffness.valuePtr() + outer[j];
+    std::copy(values + start[j], values + end[j], column);
+    for(Index a = 0; a < count; ++a)
+      if(stiffness.innerIndexPtr()[outer[j] + a] == j)
+        column[a] += diagonal[j];
+    outer[j + 1] = outer[j] + count;
+  }
   return stiffness;
 }
 
