@@ -98,8 +98,9 @@ void print_usage(const char* program)
       << "  --tolerance T              tolerance of the block Lanczos solver (default: its own)\n"
       << "  --check                    exit with a failure when the fast basis is not accurate:\n"
       << "                             eigenvalue relative errors above 1e-8, M-orthonormality\n"
-      << "                             error above 1e-9, residual above 1e-6, deformation\n"
-      << "                             deviation above 1e-5 of the bounding-box diagonal\n"
+      << "                             error above 1e-9, residual above max(1e-6, 1e3 tolerance),\n"
+      << "                             deformation deviation above 1e-4 of the bounding-box\n"
+      << "                             diagonal\n"
       << "  --mesh-directory DIR       (default " SSMD_BENCHMARK_DEFAULT_MESH_DIR ")\n"
       << "  --case-directory DIR       (default " SSMD_BENCHMARK_DEFAULT_CASE_DIR ")\n"
       << "  --output FILE              also write the markdown report to FILE\n"
@@ -330,8 +331,11 @@ Row run_case(const Deformation_case& c, const std::string& label, Eigen::Index m
 
 // The accuracy asked of the fast basis by --check: the measured values
 // (benchmark/results/eigensolvers.md) are orders of magnitude below; the
-// deformation deviation allowed by the package's goal is 1e-3.
-std::vector<std::string> accuracy_failures(const std::vector<Row>& rows)
+// deformation deviation allowed by the package's goal is 1e-3 (measured:
+// 7.7e-6 at 26k vertices, m = 50, with the default tolerance 1e-6). The residual
+// follows the tolerance of the block solver (relative to theta in the
+// shift-inverted problem, to the largest eigenvalue here).
+std::vector<std::string> accuracy_failures(const std::vector<Row>& rows, double tolerance)
 {
   std::vector<std::string> failures;
   for(const Row& r : rows)
@@ -341,9 +345,9 @@ std::vector<std::string> accuracy_failures(const std::vector<Row>& rows)
       failures.push_back(where + "eigenvalue relative error " + scientific(r.max_eigenvalue_error));
     if(!(r.fast_orthonormality <= 1e-9))
       failures.push_back(where + "M-orthonormality error " + scientific(r.fast_orthonormality));
-    if(!(r.fast_residual <= 1e-6))
+    if(!(r.fast_residual <= (std::max)(1e-6, 1e3 * tolerance)))
       failures.push_back(where + "residual " + scientific(r.fast_residual));
-    if(r.deformed && !(r.deviation <= 1e-5))
+    if(r.deformed && !(r.deviation <= 1e-4))
       failures.push_back(where + "deformation deviation " + scientific(r.deviation) + " D");
   }
   return failures;
@@ -457,7 +461,7 @@ int main(int argc, char** argv)
     }
     if(options.check)
     {
-      const std::vector<std::string> failures = accuracy_failures(rows);
+      const std::vector<std::string> failures = accuracy_failures(rows, fast_traits(options).tolerance());
       for(const std::string& failure : failures)
         std::cerr << "check failed: " << failure << "\n";
       if(!failures.empty())
