@@ -65,8 +65,8 @@ namespace CGAL {
 ///   exact arithmetic, while a recurrence on the small block tridiagonal
 ///   matrix estimates how much orthogonality rounding has cost against the
 ///   older blocks; only when that estimate exceeds `sqrt(eps)` are the block
-///   and the next one orthogonalized against the whole subspace (21 times in
-///   47 blocks for m = 100 on the 104k-vertex armadillo, 36 in 76 for
+///   and the next one orthogonalized against the whole subspace (18 times in
+///   40 blocks for m = 100 on the 104k-vertex armadillo, 30 in 66 for
 ///   m = 200). Orthogonality to `sqrt(eps)` keeps the Rayleigh-Ritz values
 ///   exact to rounding, and a final Rayleigh-Ritz step with `Q` and `M` on
 ///   the Ritz vectors makes them M-orthonormal to rounding;
