@@ -208,4 +208,13 @@ TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's
   panels.multiply_transpose(X, projected);
   CHECK((shape - H * C).cwiseAbs().maxCoeff() < 1e-13);
   CHECK((projected - H.transpose() * X).cwiseAbs().maxCoeff() < 1e-12);
+
+  // Float storage: exact products of the rounded basis, in double arithmetic.
+  const Eigen::MatrixXd rounded = H.cast<float>().cast<double>();
+  REQUIRE((rounded - H).cwiseAbs().maxCoeff() > 1e-10);
+  const Basis_panels<float> float_panels(H);
+  float_panels.multiply(C, shape);
+  float_panels.multiply_transpose(X, projected);
+  CHECK((shape - rounded * C).cwiseAbs().maxCoeff() < 1e-13);
+  CHECK((projected - rounded.transpose() * X).cwiseAbs().maxCoeff() < 1e-12);
 }

@@ -14,6 +14,7 @@
 #endif
 
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -78,9 +79,10 @@ public:
       s.setZero();
       // Column updates (axpy) rather than row dot products: no horizontal
       // reduction per row, and the panel is read once in memory order.
+      Eigen::Matrix<double, panel_rows, 1> widened;
       for(Eigen::Index k = 0; k < m_cols; ++k)
       {
-        const auto column = h.col(k).template cast<double>();
+        const auto column = in_double(h.col(k), widened);
         s.col(0) += c(k, 0) * column;
         s.col(1) += c(k, 1) * column;
         s.col(2) += c(k, 2) * column;
@@ -110,6 +112,7 @@ public:
       Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(m_cols, 3);
       Eigen::Matrix<double, Eigen::Dynamic, 3> panel_sum(m_cols, 3);
       Eigen::Matrix<double, panel_rows, 3> block;
+      Eigen::Matrix<double, panel_rows, 1> widened;
 #ifdef _OPENMP
 #pragma omp for schedule(static)
 #endif
@@ -119,7 +122,11 @@ public:
         const auto h = panel(start);
         auto x = block.topRows(h.rows());
         x = values.middleRows(start, h.rows());
-        panel_sum.noalias() = h.template cast<double>().transpose().lazyProduct(x);
+        if constexpr(std::is_same<Scalar, double>::value)
+          panel_sum.noalias() = h.transpose().lazyProduct(x);
+        else
+          for(Eigen::Index k = 0; k < m_cols; ++k)
+            panel_sum.row(k).noalias() = in_double(h.col(k), widened).transpose().lazyProduct(x);
         sum += panel_sum;
       }
       partial[static_cast<std::size_t>(thread)].swap(sum);
@@ -131,6 +138,23 @@ public:
   }
 
 private:
+  // A float column is widened once into `buffer` rather than inside every
+  // expression that reads it: Eigen re-evaluates a lazy cast at each use.
+  template <typename Column>
+  static auto in_double(const Column& column, Eigen::Matrix<double, panel_rows, 1>& buffer)
+  {
+    if constexpr(std::is_same<Scalar, double>::value)
+    {
+      (void)buffer;
+      return column;
+    }
+    else
+    {
+      buffer.head(column.rows()) = column.template cast<double>();
+      return buffer.head(column.rows());
+    }
+  }
+
   long long number_of_panels() const { return (m_rows + panel_rows - 1) / panel_rows; }
   Eigen::Index panel_height(Eigen::Index start) const { return (std::min)(panel_rows, m_rows - start); }
 

@@ -41,11 +41,8 @@ public:
                   const Triangle_arrays& rest)
   {
     m_basis = &basis;
-    // The iteration reads its own copy of the basis, laid out for it. A copy
-    // in float was measured and rejected: the reduced systems amplify its
-    // rounding, the result moved by 1e-4 of the bounding-box diagonal
-    // (armadillo arm, 104k vertices), far above the 1e-6 asked of it.
-    m_panels.assign(basis);
+    // The iteration reads its own copy of the basis, laid out for it.
+    assign_panels();
     m_mass = mass;
     m_dual = Dual_mesh_operator(rest.triangles, rest.number_of_vertices());
     m_rest_coefficients = basis.transpose() * (mass.asDiagonal() * rest.positions);
@@ -60,6 +57,22 @@ public:
     m_scale = std::sqrt(mass.sum()) *
               (rest.positions.colwise().maxCoeff() - rest.positions.colwise().minCoeff()).norm();
     m_factored = false;
+  }
+
+  /// Whether the iteration's copy of the basis is stored in float (the
+  /// arithmetic stays in double). The reduced systems amplify the rounding of
+  /// the copy: the result moved by about 1e-4 of the bounding-box diagonal
+  /// from the double one (armadillo arm, 104k vertices), which is why it is
+  /// not the default.
+  bool single_precision() const { return m_single_precision; }
+  /// Sets single_precision(); an initialized solver copies the basis again.
+  void set_single_precision(bool single)
+  {
+    if(single == m_single_precision)
+      return;
+    m_single_precision = single;
+    if(m_basis != nullptr)
+      assign_panels();
   }
 
   const Positions& smooth_rest() const { return m_smooth_rest; }
@@ -148,14 +161,34 @@ public:
   }
 
 private:
+  void assign_panels()
+  {
+    if(m_single_precision)
+    {
+      m_panels = Basis_panels<double>();
+      m_float_panels.assign(*m_basis);
+    }
+    else
+    {
+      m_float_panels = Basis_panels<float>();
+      m_panels.assign(*m_basis);
+    }
+  }
+
   void multiply(const Eigen::MatrixXd& coefficients, Positions& shape) const
   {
-    m_panels.multiply(coefficients, shape);
+    if(m_single_precision)
+      m_float_panels.multiply(coefficients, shape);
+    else
+      m_panels.multiply(coefficients, shape);
   }
 
   void multiply_transpose(const Positions& values, Eigen::MatrixXd& result) const
   {
-    m_panels.multiply_transpose(values, result);
+    if(m_single_precision)
+      m_float_panels.multiply_transpose(values, result);
+    else
+      m_panels.multiply_transpose(values, result);
   }
 
   // Buffers of the iteration, kept between calls: fresh pages cost more than
@@ -168,6 +201,8 @@ private:
 
   const Eigen::MatrixXd* m_basis = nullptr;
   Basis_panels<double> m_panels;
+  Basis_panels<float> m_float_panels;
+  bool m_single_precision = false;
 
   Eigen::VectorXd m_mass;
   Dual_mesh_operator m_dual;
