@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -362,6 +363,76 @@ TEMPLATE_TEST_CASE("CHOLMOD solver traits: solves with reused work arrays match 
   CHECK_FALSE(solver.solve(Eigen::MatrixXd::Ones(Q.rows() + 1, 1), X)); // wrong size
   CHECK_FALSE(solver.factor(-Q - M)); // negative definite
   CHECK_FALSE(solver.solve(Eigen::MatrixXd::Ones(Q.rows(), 1), X));
+}
+
+namespace {
+std::size_t counted_allocations = 0;
+void* counting_malloc(std::size_t bytes)
+{
+  ++counted_allocations;
+  return std::malloc(bytes);
+}
+void* counting_calloc(std::size_t count, std::size_t size)
+{
+  ++counted_allocations;
+  return std::calloc(count, size);
+}
+void* counting_realloc(void* block, std::size_t bytes)
+{
+  ++counted_allocations;
+  return std::realloc(block, bytes);
+}
+typedef void* (*Malloc_function)(std::size_t);
+#if SUITESPARSE_MAIN_VERSION >= 7
+Malloc_function suitesparse_malloc() { return SuiteSparse_config_malloc_func_get(); }
+void set_suitesparse_allocator(Malloc_function allocate, void* (*allocate_zeros)(std::size_t, std::size_t),
+                               void* (*reallocate)(void*, std::size_t))
+{
+  SuiteSparse_config_malloc_func_set(allocate);
+  SuiteSparse_config_calloc_func_set(allocate_zeros);
+  SuiteSparse_config_realloc_func_set(reallocate);
+}
+#else
+Malloc_function suitesparse_malloc() { return SuiteSparse_config.malloc_func; }
+void set_suitesparse_allocator(Malloc_function allocate, void* (*allocate_zeros)(std::size_t, std::size_t),
+                               void* (*reallocate)(void*, std::size_t))
+{
+  SuiteSparse_config.malloc_func = allocate;
+  SuiteSparse_config.calloc_func = allocate_zeros;
+  SuiteSparse_config.realloc_func = reallocate;
+}
+#endif
+} // namespace
+
+TEST_CASE("CHOLMOD solver traits: SuiteSparse's default allocator is restored, a user's own is kept",
+          "[basis][solver]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(20));
+  const Eigen::SparseMatrix<double> A =
+      CGAL::cotangent_stiffness_matrix(mesh) + CGAL::lumped_mass_matrix(mesh);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 4);
+  Eigen::MatrixXd X;
+  REQUIRE(suitesparse_malloc() == &std::malloc);
+  {
+    CGAL::Cholmod_simplicial_sparse_spd_solver_traits solver;
+    REQUIRE(solver.factor(A));
+    REQUIRE(solver.solve(B, X));
+    CHECK(suitesparse_malloc() == &std::malloc);
+  }
+  CHECK(suitesparse_malloc() == &std::malloc);
+
+  set_suitesparse_allocator(counting_malloc, counting_calloc, counting_realloc);
+  counted_allocations = 0;
+  {
+    CGAL::Cholmod_sparse_spd_solver_traits solver;
+    REQUIRE(solver.factor(A));
+    REQUIRE(solver.solve(B, X));
+  }
+  const bool kept = (suitesparse_malloc() == &counting_malloc);
+  set_suitesparse_allocator(std::malloc, std::calloc, std::realloc);
+  CHECK(kept);
+  CHECK(counted_allocations > 0);
+  CHECK((A * X - B).norm() < 1e-10 * B.norm());
 }
 #endif
 

@@ -640,27 +640,44 @@ private:
   {
     using Spectral_deformation::internal::threaded_dense_product;
     const Eigen::Index n = vectors.rows(), count = vectors.cols();
-    Eigen::Map<Matrix> weighted(workspace, n, count), copy(workspace + n * count, n, count);
-    weighted = mass.asDiagonal() * vectors;
-    Matrix gram(count, count);
-    threaded_dense_product(true, vectors, false, weighted, 1.0, 0.0, gram);
+    // [M Y, Q Y] side by side: one pass over Y gives both projections.
+    Eigen::Map<Matrix> products(workspace, n, 2 * count);
+    products.leftCols(count) = mass.asDiagonal() * vectors;
+    Matrix projections(count, 2 * count);
+    threaded_dense_product(true, vectors, false, products.leftCols(count), 1.0, 0.0,
+                           projections.leftCols(count));
+    const Matrix gram = projections.leftCols(count);
     if((gram - Matrix::Identity(count, count)).cwiseAbs().maxCoeff() <= 1e-13)
       return true;
     Eigen::LLT<Matrix> cholesky(gram);
     if(cholesky.info() != Eigen::Success)
       return false;
-    // vectors U^{-1}, with gram = UᵀU, is M-orthonormal.
+    // Q Y by halves of the columns on two threads (Eigen's sparse product
+    // runs on one).
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(2) schedule(static)
+#endif
+    for(int half = 0; half < 2; ++half)
+    {
+      const Eigen::Index first = count * half / 2, columns = count * (half + 1) / 2 - first;
+      products.middleCols(count + first, columns).noalias() =
+          stiffness * vectors.middleCols(first, columns);
+    }
+    threaded_dense_product(true, vectors, false, products.rightCols(count), 1.0, 0.0,
+                           projections.rightCols(count));
+    // With gram = UᵀU, Y U^{-1} is M-orthonormal and U^{-T} (Yᵀ Q Y) U^{-1}
+    // is Q projected on it; its eigenvectors E give the Ritz vectors
+    // Y (U^{-1} E), in one product.
     const Matrix inverse_upper = cholesky.matrixU().solve(Matrix::Identity(count, count));
-    copy = vectors;
-    threaded_dense_product(false, copy, false, inverse_upper, 1.0, 0.0, vectors);
-    weighted.noalias() = stiffness * vectors;
-    Matrix projected(count, count);
-    threaded_dense_product(true, vectors, false, weighted, 1.0, 0.0, projected);
+    const Matrix projected =
+        inverse_upper.transpose() * projections.rightCols(count) * inverse_upper;
     Eigen::SelfAdjointEigenSolver<Matrix> small(0.5 * (projected + projected.transpose()));
     if(small.info() != Eigen::Success)
       return false;
+    const Matrix rotation = inverse_upper * small.eigenvectors();
+    Eigen::Map<Matrix> copy(workspace, n, count);
     copy = vectors;
-    threaded_dense_product(false, copy, false, small.eigenvectors(), 1.0, 0.0, vectors);
+    threaded_dense_product(false, copy, false, rotation, 1.0, 0.0, vectors);
     values = small.eigenvalues();
     return true;
   }

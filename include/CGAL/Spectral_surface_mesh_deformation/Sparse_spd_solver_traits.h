@@ -18,6 +18,8 @@
 
 #ifdef CGAL_SSMD_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
+
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Cholmod_huge_page_allocator.h>
 #endif
 
 namespace CGAL {
@@ -111,6 +113,13 @@ enum Cholmod_factor_form
 /// right-hand sides on a 104k-vertex mesh, a repeated solve took 1.03 s
 /// with fresh arrays and 0.28 s with reused ones.
 ///
+/// While it factors or solves, SuiteSparse allocates its large blocks in
+/// transparent huge pages where the kernel grants them (Linux; SuiteSparse's
+/// allocator is replaced for that time if it is the default one, and
+/// restored): the first write of a factor of hundreds of MiB in 4 KiB pages
+/// took 2 to 5 s of a 13 to 19 s eigensolve at 416k vertices on the
+/// virtual machines this package was measured on.
+///
 /// Available when the package is configured with CHOLMOD (the macro
 /// `CGAL_SSMD_USE_CHOLMOD` is defined). Like every model, an object may be
 /// used by one thread at a time; the work arrays make even `solve()`, which
@@ -154,6 +163,7 @@ public:
       m_factored = m_empty;
       return m_factored;
     }
+    const Spectral_deformation::internal::Cholmod_huge_page_allocator huge_pages;
     m_solver.compute(A);
     m_factored = (m_solver.info() == Eigen::Success && m_solver.factor() != nullptr);
     return m_factored;
@@ -173,6 +183,8 @@ public:
     if(B.rows() != static_cast<Eigen::Index>(m_solver.factor()->n))
       return false;
     X.resize(B.rows(), B.cols());
+    // The work arrays of the first solve are allocated then.
+    const Spectral_deformation::internal::Cholmod_huge_page_allocator huge_pages;
     // A simplicial factor is solved column by column without the BLAS: two
     // threads each solve half of the right-hand sides against the shared,
     // read-only factor, with their own CHOLMOD workspace (1.45× with 8

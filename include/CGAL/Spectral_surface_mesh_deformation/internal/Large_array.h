@@ -26,6 +26,26 @@ namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
 
+// Asks for transparent huge pages on the whole 2 MiB pages of
+// [data, data + bytes) that are not mapped yet: their first writes then
+// fault once per 2 MiB instead of once per 4 KiB. A hint only, for ranges of
+// a few MiB and more: nothing changes when the kernel lacks it or refuses it.
+inline void advise_huge_pages(void* data, std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t huge_page = std::uintptr_t(2) << 20;
+  if(data == nullptr)
+    return;
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(data) + huge_page - 1) / huge_page * huge_page;
+  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + bytes) / huge_page * huge_page;
+  if(end > begin)
+    madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
 // Maps the whole pages of [data, data + bytes) now, in huge pages where the
 // kernel grants them, instead of page by page on their first writes. On the
 // virtual machines this package was measured on, a first write costs about
@@ -44,9 +64,7 @@ inline void prefault(void* data, std::size_t bytes)
   const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + bytes) / page * page;
   if(end <= begin)
     return;
-#ifdef MADV_HUGEPAGE
-  madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#endif
+  advise_huge_pages(reinterpret_cast<void*>(begin), end - begin);
   madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
 #else
   (void)data;
@@ -54,12 +72,6 @@ inline void prefault(void* data, std::size_t bytes)
 #endif
 }
 
-/// An uninitialized array of trivially copyable values for work arrays of
-/// hundreds of megabytes. On Linux it is mapped with transparent huge pages
-/// requested (madvise): the first touch of such an array then faults once
-/// per 2 MiB instead of once per 4 KiB page, which was measured to make the
-/// first touch of 512 MiB 47 times faster on a virtual machine where a page
-/// fault costs 11 µs. The pages are only touched where written.
 // Prefaults memory ranges on another thread while the calling thread works
 // on something else (the block eigensolver factors its matrix, on one core,
 // meanwhile): on the machines measured, the first write of the Lanczos
@@ -96,6 +108,12 @@ private:
   std::thread m_thread;
 };
 
+/// An uninitialized array of trivially copyable values for work arrays of
+/// hundreds of megabytes. On Linux it is mapped with transparent huge pages
+/// requested (madvise): the first touch of such an array then faults once
+/// per 2 MiB instead of once per 4 KiB page, which was measured to make the
+/// first touch of 512 MiB 47 times faster on a virtual machine where a page
+/// fault costs 11 µs. The pages are only touched where written.
 template <class T>
 class Large_array
 {
