@@ -385,6 +385,8 @@ void* counting_realloc(void* block, std::size_t bytes)
 typedef void* (*Malloc_function)(std::size_t);
 #if SUITESPARSE_MAIN_VERSION >= 7
 Malloc_function suitesparse_malloc() { return SuiteSparse_config_malloc_func_get(); }
+void* (*suitesparse_calloc())(std::size_t, std::size_t) { return SuiteSparse_config_calloc_func_get(); }
+void* (*suitesparse_realloc())(void*, std::size_t) { return SuiteSparse_config_realloc_func_get(); }
 void set_suitesparse_allocator(Malloc_function allocate, void* (*allocate_zeros)(std::size_t, std::size_t),
                                void* (*reallocate)(void*, std::size_t))
 {
@@ -394,6 +396,8 @@ void set_suitesparse_allocator(Malloc_function allocate, void* (*allocate_zeros)
 }
 #else
 Malloc_function suitesparse_malloc() { return SuiteSparse_config.malloc_func; }
+void* (*suitesparse_calloc())(std::size_t, std::size_t) { return SuiteSparse_config.calloc_func; }
+void* (*suitesparse_realloc())(void*, std::size_t) { return SuiteSparse_config.realloc_func; }
 void set_suitesparse_allocator(Malloc_function allocate, void* (*allocate_zeros)(std::size_t, std::size_t),
                                void* (*reallocate)(void*, std::size_t))
 {
@@ -412,14 +416,19 @@ TEST_CASE("CHOLMOD solver traits: SuiteSparse's default allocator is restored, a
       CGAL::cotangent_stiffness_matrix(mesh) + CGAL::lumped_mass_matrix(mesh);
   const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 4);
   Eigen::MatrixXd X;
-  REQUIRE(suitesparse_malloc() == &std::malloc);
+  // The default allocator (malloc, or a sanitizer's interceptor of it).
+  const Malloc_function default_malloc = suitesparse_malloc();
+  const auto default_calloc = suitesparse_calloc();
+  const auto default_realloc = suitesparse_realloc();
   {
     CGAL::Cholmod_simplicial_sparse_spd_solver_traits solver;
     REQUIRE(solver.factor(A));
     REQUIRE(solver.solve(B, X));
-    CHECK(suitesparse_malloc() == &std::malloc);
+    CHECK(suitesparse_malloc() == default_malloc);
   }
-  CHECK(suitesparse_malloc() == &std::malloc);
+  CHECK(suitesparse_malloc() == default_malloc);
+  CHECK(suitesparse_calloc() == default_calloc);
+  CHECK(suitesparse_realloc() == default_realloc);
 
   set_suitesparse_allocator(counting_malloc, counting_calloc, counting_realloc);
   counted_allocations = 0;
@@ -429,7 +438,7 @@ TEST_CASE("CHOLMOD solver traits: SuiteSparse's default allocator is restored, a
     REQUIRE(solver.solve(B, X));
   }
   const bool kept = (suitesparse_malloc() == &counting_malloc);
-  set_suitesparse_allocator(std::malloc, std::calloc, std::realloc);
+  set_suitesparse_allocator(default_malloc, default_calloc, default_realloc);
   CHECK(kept);
   CHECK(counted_allocations > 0);
   CHECK((A * X - B).norm() < 1e-10 * B.norm());
