@@ -445,6 +445,31 @@ TEST_CASE("CHOLMOD solver traits: SuiteSparse's default allocator is restored, a
 }
 #endif
 
+#ifdef CGAL_SSMD_USE_CHOLMOD
+TEST_CASE("CHOLMOD simplicial solver traits: a supernodal factorization converted gives the same solves",
+          "[basis][solver]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(30));
+  const Eigen::SparseMatrix<double> A =
+      CGAL::cotangent_stiffness_matrix(mesh) + CGAL::lumped_mass_matrix(mesh);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 8);
+  Eigen::MatrixXd X_simplicial, X_converted;
+  CGAL::Cholmod_simplicial_sparse_spd_solver_traits simplicial, converted;
+  simplicial.set_supernodal_factorization_switch(std::numeric_limits<double>::infinity());
+  converted.set_supernodal_factorization_switch(0.0);
+  REQUIRE(simplicial.factor(A));
+  REQUIRE(converted.factor(A));
+  REQUIRE(simplicial.solve(B, X_simplicial));
+  REQUIRE(converted.solve(B, X_converted));
+  CHECK((A * X_converted - B).norm() < 1e-10 * B.norm());
+  CHECK((X_converted - X_simplicial).norm() < 1e-10 * X_simplicial.norm());
+  // One right-hand side takes the single-thread path of the solve.
+  Eigen::MatrixXd x;
+  REQUIRE(converted.solve(B.col(3), x));
+  CHECK((x - X_simplicial.col(3)).norm() < 1e-10 * X_simplicial.col(3).norm());
+}
+#endif
+
 TEST_CASE("transform then inverse is the identity when m = n", "[basis]")
 {
   const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(1));
