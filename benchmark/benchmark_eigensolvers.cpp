@@ -387,8 +387,9 @@ std::string report(const Options& options, const std::vector<Row>& rows, double 
       << (options.tolerance > 0 ? " set by --tolerance" : ", its default")
       << ", blocks of max(8, m/32), no restart, partial reorthogonalization, "
          "constants deflated), each with its default sparse solver: the reference CHOLMOD's "
-         "supernodal factor, the block method its simplicial factor with the right-hand sides "
-         "split over the threads, and OpenBLAS set to one thread during its solve (its tall "
+         "supernodal factor, the block method its simplicial factor (factored in supernodal form "
+         "above 200 flops per entry, then converted) solved by subtrees split over two "
+         "threads, and OpenBLAS set to one thread during its solve (its tall "
          "products are split by OpenMP)\n\n";
 
   out << "| mesh | n | m | reference | block Lanczos | speed-up | max rel. error λ | median rel. "

@@ -468,6 +468,40 @@ TEST_CASE("CHOLMOD simplicial solver traits: a supernodal factorization converte
   REQUIRE(converted.solve(B.col(3), x));
   CHECK((x - X_simplicial.col(3)).norm() < 1e-10 * X_simplicial.col(3).norm());
 }
+
+TEST_CASE("CHOLMOD simplicial solver traits: solves split by subtrees agree with an independent solver",
+          "[basis][solver]")
+{
+  // Two components: the elimination tree is a forest.
+  Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(30));
+  {
+    const Surface_mesh sphere = to_mesh<Surface_mesh>(icosphere(3));
+    mesh.join(sphere);
+  }
+  const Eigen::SparseMatrix<double> A =
+      CGAL::cotangent_stiffness_matrix(mesh) + CGAL::lumped_mass_matrix(mesh);
+  CGAL::Eigen_sparse_spd_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> independent;
+  REQUIRE(independent.factor(A));
+  for(const double supernodal_switch : {std::numeric_limits<double>::infinity(), 0.0})
+  {
+    CGAL::Cholmod_simplicial_sparse_spd_solver_traits solver;
+    solver.set_supernodal_factorization_switch(supernodal_switch);
+    REQUIRE(solver.factor(A));
+#ifdef _OPENMP
+    CHECK(solver.solves_in_subtrees());
+#endif
+    // Widths 1, 2, 4, 8 and a block of eight followed by a tail of five.
+    for(const Eigen::Index columns : {1, 2, 3, 5, 8, 13})
+    {
+      const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), columns);
+      Eigen::MatrixXd X, expected;
+      REQUIRE(solver.solve(B, X));
+      REQUIRE(independent.solve(B, expected));
+      CHECK((X - expected).norm() < 1e-10 * expected.norm());
+      CHECK((A * X - B).norm() < 1e-10 * B.norm());
+    }
+  }
+}
 #endif
 
 TEST_CASE("transform then inverse is the identity when m = n", "[basis]")

@@ -78,7 +78,8 @@ namespace CGAL {
 /// - *two threads*: OpenBLAS runs on one thread during `compute()` (its idle
 ///   threads keep a core busy between calls) and the tall products are split
 ///   between the OpenMP threads; with the default CHOLMOD simplicial factor,
-///   the right-hand sides of each solve are split between two threads too.
+///   each solve is split between two threads too, by subtrees of the
+///   elimination tree (see `Cholmod_llt_solver_traits::solves_in_subtrees()`).
 ///   The OpenBLAS thread count is a setting of the whole process, restored
 ///   when `compute()` returns: other threads calling OpenBLAS meanwhile run
 ///   single-threaded. `OMP_NUM_THREADS=1` makes the whole method sequential.
