@@ -19,6 +19,7 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <exception>
@@ -54,7 +55,7 @@ namespace CGAL {
 /// The default tolerance, `1e-6`, is looser than the reference's `1e-10`
 /// because a deformation does not need more: the Ritz values converge with
 /// the square of the residual (relative errors below `1e-11` against the
-/// reference on the armadillo meshes), the final Rayleigh-Ritz step makes
+/// reference on the armadillo meshes), the final orthonormalization makes
 /// the basis M-orthonormal to rounding whatever the tolerance, and the
 /// armadillo arm deformed with the basis moved from the same deformation
 /// with the reference basis by `2.3e-7` of the bounding-box diagonal at 104k
@@ -73,8 +74,9 @@ namespace CGAL {
 ///   and the next one orthogonalized against the whole subspace (18 times in
 ///   40 blocks for m = 100 on the 104k-vertex armadillo, 30 in 66 for
 ///   m = 200). Orthogonality to `sqrt(eps)` keeps the Rayleigh-Ritz values
-///   exact to rounding, and a final Rayleigh-Ritz step with `Q` and `M` on
-///   the Ritz vectors makes them M-orthonormal to rounding;
+///   exact to rounding, and a final Cholesky QR of the Ritz vectors (their
+///   M-Gram matrix is summed while they are computed, in place of the
+///   subspace) makes them M-orthonormal to rounding;
 /// - *deflation of the constants*: when `Q` is a Laplacian (its rows sum to
 ///   zero), the functions constant on each connected component are known
 ///   eigenvectors of 0. They are returned as such and kept out of the Krylov
@@ -337,17 +339,12 @@ private:
     Matrix V(n, max_dimension + b);
     Spectral_deformation::internal::advise_huge_pages(
         V.data(), sizeof(double) * static_cast<std::size_t>(V.size()));
-    // The factorization runs on one core: the other maps the subspace the
-    // iteration typically reaches (3 to 4 m columns on the armadillo meshes)
-    // meanwhile.
     const Eigen::Index typical_columns = (std::min)(max_dimension + b, round_up(3 * m, b) + b);
-    Spectral_deformation::internal::Background_prefault mapping(
-        {{V.data(),
-          sizeof(double) * static_cast<std::size_t>(n) * static_cast<std::size_t>(typical_columns)}});
-
     report(progress, Progress::FACTORIZATION);
     SparseSPDSolverTraits solver;
-    if(!solver.factor(Spectral_deformation::internal::shifted_stiffness(stiffness, mass, sigma)))
+    if(!factor_while_mapping(
+           solver, Spectral_deformation::internal::shifted_stiffness(stiffness, mass, sigma), V.data(),
+           sizeof(double) * static_cast<std::size_t>(n) * static_cast<std::size_t>(typical_columns)))
       return fail("the factorization of the shifted stiffness matrix failed");
     progress.stage = Progress::ITERATION;
     // T and the estimates of Vᵀ M V (`orthogonality`, upper blocks only)
@@ -598,7 +595,6 @@ private:
         Matrix selected(k, wanted);
         for(Eigen::Index i = 0; i < wanted; ++i)
           selected.col(i) = ritz_coordinates.col(wanted - 1 - i);
-        mapping.join();
         Eigen::VectorXd values(m);
         values.head(known).setZero();
         for(Eigen::Index i = 0; i < wanted; ++i)
@@ -624,6 +620,49 @@ private:
                     std::to_string(max_dimension));
       }
     }
+  }
+
+  // Factors `shifted` with `solver` on one core while the other maps the
+  // first `bytes` of `subspace`, the columns the iteration typically reaches
+  // (3 to 4 m on the armadillo meshes), until the factorization ends: on the
+  // machines measured, the first write of the subspace cost as much as the
+  // factorization. With OpenMP both run in a team of two threads, so that
+  // OpenMP loops inside the factorization (CHOLMOD's supernodal one has
+  // some) run nested, on one thread, instead of competing with the mapping.
+  static bool factor_while_mapping(SparseSPDSolverTraits& solver,
+                                   const Eigen::SparseMatrix<double>& shifted, void* subspace,
+                                   std::size_t bytes)
+  {
+#ifdef _OPENMP
+    if(!omp_in_parallel() && omp_get_max_threads() >= 2)
+    {
+      std::atomic<bool> factored{false};
+      bool success = false;
+      std::exception_ptr error;
+#pragma omp parallel num_threads(2)
+      {
+        if(omp_get_thread_num() == 0)
+        {
+          try
+          {
+            success = solver.factor(shifted);
+          }
+          catch(...)
+          {
+            error = std::current_exception();
+          }
+          factored.store(true, std::memory_order_relaxed);
+        }
+        else
+          Spectral_deformation::internal::prefault_until(subspace, bytes, factored);
+      }
+      if(error)
+        std::rethrow_exception(error);
+      return success;
+    }
+#endif
+    Spectral_deformation::internal::Background_prefault mapping(subspace, bytes);
+    return solver.factor(shifted);
   }
 
   // Overwrites the leading columns of V with the eigenvectors: the known

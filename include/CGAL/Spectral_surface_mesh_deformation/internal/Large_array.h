@@ -7,6 +7,8 @@
 #ifndef CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_INTERNAL_LARGE_ARRAY_H
 #define CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_INTERNAL_LARGE_ARRAY_H
 
+#include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <new>
@@ -72,23 +74,30 @@ inline void prefault(void* data, std::size_t bytes)
 #endif
 }
 
-// Prefaults memory ranges on another thread while the calling thread works
-// on something else (the block eigensolver factors its matrix, on one core,
-// meanwhile): on the machines measured, the first write of the Lanczos
-// subspace cost as much as the factorization. Joined on destruction; the
-// ranges must outlive the object. Without a thread (creation failed), the
-// memory is simply mapped on its first write.
+// Prefaults [data, data + bytes) in pieces of 32 MiB, in order, until
+// `stop` is set; the rest is then mapped on its first write.
+inline void prefault_until(void* data, std::size_t bytes, const std::atomic<bool>& stop)
+{
+  const std::size_t piece = std::size_t(32) << 20;
+  char* const begin = static_cast<char*>(data);
+  for(std::size_t offset = 0; offset < bytes && !stop.load(std::memory_order_relaxed); offset += piece)
+    prefault(begin + offset, (std::min)(piece, bytes - offset));
+}
+
+// Prefaults a memory range on another thread while the calling thread works
+// on something else, until `stop()` (or the destructor) tells it to stop:
+// on the machines measured, the first write of the Lanczos subspace cost as
+// much as the factorization that runs meanwhile. The range must outlive the
+// object. Without a thread (creation failed), the memory is simply mapped on
+// its first write.
 class Background_prefault
 {
 public:
-  explicit Background_prefault(std::vector<std::pair<void*, std::size_t>> ranges)
+  Background_prefault(void* data, std::size_t bytes)
   {
     try
     {
-      m_thread = std::thread([ranges]() {
-        for(const auto& range : ranges)
-          prefault(range.first, range.second);
-      });
+      m_thread = std::thread([this, data, bytes]() { prefault_until(data, bytes, m_stop); });
     }
     catch(const std::system_error&)
     {
@@ -96,15 +105,17 @@ public:
   }
   Background_prefault(const Background_prefault&) = delete;
   Background_prefault& operator=(const Background_prefault&) = delete;
-  ~Background_prefault() { join(); }
+  ~Background_prefault() { stop(); }
 
-  void join()
+  void stop()
   {
+    m_stop.store(true, std::memory_order_relaxed);
     if(m_thread.joinable())
       m_thread.join();
   }
 
 private:
+  std::atomic<bool> m_stop{false};
   std::thread m_thread;
 };
 
