@@ -14,8 +14,6 @@
 #include <new>
 #include <system_error>
 #include <thread>
-#include <utility>
-#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
