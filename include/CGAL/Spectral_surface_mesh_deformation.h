@@ -1168,12 +1168,34 @@ private:
         if(region.is_fixed[i])
           anchored.row(static_cast<Eigen::Index>(i)) = rest.row(static_cast<Eigen::Index>(i));
       transferred = region.detail.transfer_soft(smooth_deformed, anchored, m_constrained, targets, result);
+      if(transferred)
+        meet_soft_constraints(targets, result);
     }
     if(!transferred)
       throw Error(Error::SOLVER_FAILURE, "the detail transfer failed (a face of the smooth "
                                          "deformed mesh is degenerate)");
     m_deform_report.detail_transfer_seconds = seconds_since(transfer_start);
     report_residuals(result, targets);
+  }
+
+  // Soft policy: the detail transfer carries the rotations of the smooth
+  // mesh, not its stretch, so the control vertices end farther from their
+  // targets than the smooth mesh did. The residuals are met as the reduced
+  // system meets its targets, by a smooth field of the basis added to the
+  // region (not to the fixed vertices, which stay where they are).
+  void meet_soft_constraints(const Positions& targets, Positions& result) const
+  {
+    const Region& region = *m_region;
+    Positions residuals(targets.rows(), 3);
+    for(std::size_t k = 0; k < m_constrained.size(); ++k)
+      residuals.row(static_cast<Eigen::Index>(k)) =
+          targets.row(static_cast<Eigen::Index>(k)) - result.row(m_constrained[k]);
+    const Positions correction = region.spectral.shape(region.spectral.fit_constraints(residuals));
+    if(!correction.allFinite())
+      throw Error(Error::SOLVER_FAILURE, "the iteration produced non-finite values");
+    for(std::size_t i = 0; i < region.is_fixed.size(); ++i)
+      if(!region.is_fixed[i])
+        result.row(static_cast<Eigen::Index>(i)) += correction.row(static_cast<Eigen::Index>(i));
   }
 
   void deform_spatial(unsigned int iterations, double tolerance, Positions& result)

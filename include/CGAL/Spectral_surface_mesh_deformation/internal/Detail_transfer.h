@@ -10,11 +10,13 @@
 #include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_surface_mesh_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Dirichlet_system.h>
+#include <CGAL/Spectral_surface_mesh_deformation/internal/Smooth_rotation_field.h>
 #include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -22,12 +24,26 @@ namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
 
-/// Deformation transfer (Botsch et al. 2006): the deformation gradient of
-/// every face of a smooth mesh, T = E' E⁻¹ with E = [e1, e2, n/√|n|], is
-/// applied to the gradients of the same face of the detailed mesh, and the
-/// detailed positions are recovered by the Poisson system
-/// Q Y = Σ_f Σ_{ij∈f} ½cot_f(ij) T_f (v_i - v_j), Q the cotangent stiffness of
-/// the detailed mesh (the gradient form of min Σ_f A_f |∇Y - T_f ∇V|²).
+/// Detail transfer: the details of the detailed mesh follow the local
+/// rotations of the smooth mesh. R_i, the rotation of the smooth one-ring of
+/// vertex i from the smooth rest to the smooth deformed mesh, is fitted as in
+/// as-rigid-as-possible deformation (`Smooth_rotation_field`), and the
+/// detailed positions Y solve the Poisson system
+/// Q Y = Σ_ij w_ij ½(R_i + R_j)(v_i − v_j), Q the cotangent stiffness of the
+/// detailed mesh (the global step of as-rigid-as-possible deformation with
+/// the rotations of the smooth mesh). Each edge gets a rotated copy of its
+/// rest vector, so the right-hand side is bounded by that of the rest shape
+/// whatever the smooth mesh looks like (even where it is folded or squeezed
+/// into a curve); identity rotations give back V and a rigid motion its
+/// rigid image.
+///
+/// Botsch et al. (2006) transfer the whole deformation gradient
+/// T = E′E⁻¹, E = [e1, e2, n/√|n|], of each smooth face. It divides by the
+/// smooth rest face, and where a band-limited smooth mesh squeezes a thin
+/// feature into a near-curve its faces are slivers whose normal, and so the
+/// rotation part of T, is set by round-off: the details there crumple and
+/// fold. It also carries the stretch and shrinkage of the smooth mesh into
+/// the result, which rotations do not.
 ///
 /// Two ways to fix the free translation of each connected component:
 /// - soft: the vertices that never move are prescribed (and one pinned
@@ -40,8 +56,8 @@ class Detail_transfer
 {
 public:
   /// `detailed` validated; `smooth_rest` the smooth positions of the same
-  /// connectivity. Throws `Spectral_deformation_error` when a smooth face is
-  /// degenerate or the factorization fails.
+  /// connectivity. Throws `Spectral_deformation_error` when `smooth_rest` is
+  /// not finite.
   void initialize(const Triangle_arrays& detailed, const Positions& smooth_rest)
   {
     typedef Spectral_deformation_error Error;
@@ -49,23 +65,16 @@ public:
     m_triangles = detailed.triangles;
     m_stiffness = cotangent_stiffness(detailed);
     const Eigen::Index f_count = detailed.number_of_faces();
-    m_half_cotangents.resize(f_count, 3);
-    m_inverse_frames.resize(static_cast<std::size_t>(f_count));
+    Eigen::Matrix<double, Eigen::Dynamic, 3> half_cotangents(f_count, 3);
     for(Eigen::Index f = 0; f < f_count; ++f)
-    {
       for(int k = 0; k < 3; ++k)
       {
         const Eigen::Vector3d u = corner_edge(m_rest, f, k, 1), v = corner_edge(m_rest, f, k, 2);
-        m_half_cotangents(f, k) = 0.5 * u.dot(v) / u.cross(v).norm();
+        half_cotangents(f, k) = 0.5 * u.dot(v) / u.cross(v).norm();
       }
-      const Eigen::Matrix3d E = frame(smooth_rest, f);
-      Eigen::FullPivLU<Eigen::Matrix3d> lu(E);
-      if(!lu.isInvertible() || !E.allFinite())
-        throw Error(Error::SOLVER_FAILURE, "face " + std::to_string(f) +
-                                               " of the smooth mesh is degenerate: use more "
-                                               "frequencies");
-      m_inverse_frames[static_cast<std::size_t>(f)] = lu.inverse();
-    }
+    if(!smooth_rest.allFinite())
+      throw Error(Error::SOLVER_FAILURE, "the smooth mesh has non-finite coordinates");
+    m_rotations.initialize(m_triangles, smooth_rest, half_cotangents);
 
     m_component = connected_components(m_triangles, m_rest.rows(), m_number_of_components);
     m_soft_ready = false;
@@ -120,18 +129,25 @@ public:
   /// The Poisson right-hand side for the smooth deformed positions.
   Eigen::MatrixXd right_hand_side(const Positions& smooth_deformed) const
   {
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m_rest.rows(), 3);
-    for(Eigen::Index f = 0; f < m_triangles.rows(); ++f)
+    m_rotations.compute(smooth_deformed, m_rotation_workspace);
+    const std::vector<Eigen::Matrix3d>& R = m_rotation_workspace;
+    const Cotangent_adjacency& a = m_rotations.adjacency();
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_rest.rows());
+    Eigen::MatrixXd rhs(n, 3);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) if(n > 20000)
+#endif
+    for(std::ptrdiff_t i = 0; i < n; ++i)
     {
-      const Eigen::Matrix3d T = frame(smooth_deformed, f) * m_inverse_frames[static_cast<std::size_t>(f)];
-      for(int k = 0; k < 3; ++k)
+      const Eigen::Matrix3d& Ri = R[static_cast<std::size_t>(i)];
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
       {
-        const int i = m_triangles(f, (k + 1) % 3), j = m_triangles(f, (k + 2) % 3);
-        const Eigen::RowVector3d d =
-            m_half_cotangents(f, k) * (T * (m_rest.row(i) - m_rest.row(j)).transpose()).transpose();
-        rhs.row(i) += d;
-        rhs.row(j) -= d;
+        const int j = a.neighbours[static_cast<std::size_t>(s)];
+        const Eigen::Vector3d e = (m_rest.row(i) - m_rest.row(j)).transpose();
+        sum.noalias() += (0.5 * a.weights[static_cast<std::size_t>(s)]) * ((Ri + R[static_cast<std::size_t>(j)]) * e);
       }
+      rhs.row(i) = sum.transpose();
     }
     return rhs;
   }
@@ -194,22 +210,11 @@ private:
     return (x.row(m_triangles(f, (corner + shift) % 3)) - x.row(m_triangles(f, corner))).transpose();
   }
 
-  Eigen::Matrix3d frame(const Positions& x, Eigen::Index f) const
-  {
-    const Eigen::Vector3d e1 = corner_edge(x, f, 0, 1), e2 = corner_edge(x, f, 0, 2);
-    const Eigen::Vector3d n = e1.cross(e2);
-    Eigen::Matrix3d E;
-    E.col(0) = e1;
-    E.col(1) = e2;
-    E.col(2) = n / std::sqrt(n.norm());
-    return E;
-  }
-
   Positions m_rest;
   Triangles m_triangles;
   Eigen::SparseMatrix<double> m_stiffness;
-  Eigen::Matrix<double, Eigen::Dynamic, 3> m_half_cotangents;
-  std::vector<Eigen::Matrix3d> m_inverse_frames;
+  Smooth_rotation_field m_rotations;
+  mutable std::vector<Eigen::Matrix3d> m_rotation_workspace;
   std::vector<int> m_component;
   int m_number_of_components = 0;
   Dirichlet_system<SparseSPDSolverTraits> m_soft;

@@ -160,6 +160,15 @@ public:
     return report;
   }
 
+  /// The coefficients (m×3) of the smooth field that meets `residuals` (k×3,
+  /// one row per constrained vertex of `preprocess()`) as the reduced system
+  /// meets its targets: the least squares solution of
+  /// [L̂F H; w H_c] α = [0; w residuals], with the factorization of Ã.
+  Eigen::MatrixXd fit_constraints(const Positions& residuals) const
+  {
+    return m_cholesky.solve(m_weight * m_weight * (m_constrained_rows.transpose() * residuals));
+  }
+
 private:
   void assign_panels()
   {
