@@ -130,10 +130,42 @@ inline void finish_case(Deformation_case& c)
     throw std::runtime_error("case " + c.name + ": no handle vertex");
 }
 
+/// Refines `c.mesh` by `levels` steps of Loop subdivision and extends the
+/// per-vertex status: CGAL's Loop subdivision keeps the old vertices first,
+/// each new vertex is on an old edge, adjacent to its two old endpoints; it
+/// takes their status when they agree and is a free ROI vertex otherwise.
+inline void subdivide_case(Deformation_case& c, unsigned int levels)
+{
+  for(unsigned int level = 0; level < levels; ++level)
+  {
+    const std::size_t old_count = num_vertices(c.mesh);
+    CGAL::Subdivision_method_3::Loop_subdivision(c.mesh, CGAL::parameters::number_of_iterations(1));
+    std::vector<Status> status(num_vertices(c.mesh), CGAL::IO::ROI_VERTEX);
+    std::copy(c.status.begin(), c.status.end(), status.begin());
+    for(vertex_descriptor v : vertices(c.mesh))
+    {
+      if(v.idx() < old_count)
+        continue;
+      std::vector<Status> ends;
+      for(vertex_descriptor w : CGAL::vertices_around_target(v, c.mesh))
+        if(w.idx() < old_count)
+          ends.push_back(c.status[w.idx()]);
+      if(ends.size() != 2)
+        throw std::runtime_error("case " + c.name + ": unexpected Loop subdivision vertex order");
+      status[v.idx()] = ends[0] == ends[1] ? ends[0] : CGAL::IO::ROI_VERTEX;
+    }
+    c.status = std::move(status);
+  }
+  if(levels > 0)
+    c.source += ", Loop-subdivided " + std::to_string(levels) + (levels == 1 ? " time" : " times");
+}
+
 /// The Botsch and Sorkine 2008 case `name`, or false when one of its files
-/// is missing.
+/// is missing; with `subdivision_levels` > 0 on its mesh refined by
+/// `subdivide_case()`.
 inline bool read_botsch08_case(const std::string& directory, const std::string& name,
-                        Deformation_case& c, std::string& why_not)
+                        Deformation_case& c, std::string& why_not,
+                        unsigned int subdivision_levels = 0)
 {
   const std::string base = directory + "/" + name;
   for(const char* extension : {".off", ".sel", ".def"})
@@ -148,6 +180,7 @@ inline bool read_botsch08_case(const std::string& directory, const std::string& 
   c.mesh = read_mesh(base + ".off");
   c.status = CGAL::IO::read_selection(base + ".sel", num_vertices(c.mesh));
   c.transformation = CGAL::IO::read_handle_transformation(base + ".def");
+  subdivide_case(c, subdivision_levels);
   finish_case(c);
   return true;
 }
@@ -351,6 +384,8 @@ struct Case_geometry
   std::vector<std::array<int, 3>> faces;
   std::vector<std::pair<int, int>> flat_face_pairs;  // adjacent faces, normals' dot > 0 at rest
   std::size_t interior_edges = 0;
+  bool closed = false;       // no border edge: the volume is measured
+  double volume = 0;         // enclosed by the rest shape (closed meshes)
   std::vector<std::pair<int, int>> moving_edges;     // with at least one ROI vertex
   std::vector<double> moving_edge_lengths;
   std::vector<std::size_t> border_edges;             // in moving_edges, with one vertex outside the ROI
@@ -362,6 +397,16 @@ inline Eigen::Vector3d face_normal(const Positions& x, const std::array<int, 3>&
 {
   const Eigen::Vector3d a = x.row(t[0]).transpose();
   return (Eigen::Vector3d(x.row(t[1]).transpose()) - a).cross(Eigen::Vector3d(x.row(t[2]).transpose()) - a);
+}
+
+/// The signed volume enclosed by the faces at `x` (meaningful for closed meshes).
+inline double enclosed_volume(const Positions& x, const std::vector<std::array<int, 3>>& faces)
+{
+  double six_volume = 0;
+  for(const auto& t : faces)
+    six_volume += Eigen::Vector3d(x.row(t[0]).transpose())
+                      .dot(Eigen::Vector3d(x.row(t[1]).transpose()).cross(Eigen::Vector3d(x.row(t[2]).transpose())));
+  return six_volume / 6.0;
 }
 
 inline Case_geometry case_geometry(const Deformation_case& c)
@@ -408,6 +453,9 @@ inline Case_geometry case_geometry(const Deformation_case& c)
            .dot(face_normal(g.rest, g.faces[static_cast<std::size_t>(f2)])) > 0)
       g.flat_face_pairs.emplace_back(f1, f2);
   }
+  g.closed = (g.interior_edges == num_edges(mesh));
+  if(g.closed)
+    g.volume = enclosed_volume(g.rest, g.faces);
   g.targets.resize(static_cast<Eigen::Index>(c.handles.size()), 3);
   for(std::size_t k = 0; k < c.handles.size(); ++k)
   {
@@ -431,6 +479,7 @@ struct Quality
   double max_edge_change = not_a_number;
   double max_border_edge_change = not_a_number;
   std::size_t folded_pairs = 0;
+  double volume_change = not_a_number; // relative, closed meshes only
 };
 
 inline Quality measure(const Case_geometry& g, const Positions& x)
@@ -477,6 +526,9 @@ inline Quality measure(const Case_geometry& g, const Positions& x)
     for(std::size_t k : g.border_edges)
       q.max_border_edge_change = std::max(q.max_border_edge_change, change[k]);
   }
+
+  if(g.closed && g.volume != 0)
+    q.volume_change = enclosed_volume(x, g.faces) / g.volume - 1.0;
 
   for(const auto& pair : g.flat_face_pairs)
     if(face_normal(x, g.faces[static_cast<std::size_t>(pair.first)])

@@ -43,6 +43,8 @@ cmake --build "${build_dir}" --target benchmark_deformation -j 2
 SSMD_BUILD_DIR="${build_dir}" "${repository}/scripts/fetch_sample_meshes.sh"
 mesh_dir="${build_dir}/data/meshes"
 [[ -f "${mesh_dir}/twist_bar.off" ]] || "${python}" "${benchmark_dir}/make_bar_mesh.py" "${mesh_dir}/twist_bar.off"
+[[ -f "${mesh_dir}/tube.off" && -f "${mesh_dir}/strip.off" ]] ||
+  "${python}" "${benchmark_dir}/make_shape_meshes.py" "${mesh_dir}"
 
 botsch_option=()
 if [[ -d "${botsch08}" ]]; then

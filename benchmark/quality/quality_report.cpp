@@ -55,6 +55,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -102,6 +103,8 @@ struct Options
   std::size_t large_roi = 20000;
   std::vector<std::string> notes;
   bool selection_only = false; // write the selections and stop
+  std::vector<unsigned int> levels{0};              // Loop subdivision levels of the case files
+  std::map<std::string, std::vector<unsigned int>> case_levels; // per case, replaces `levels`
 };
 
 void print_usage(const char* program)
@@ -128,7 +131,12 @@ void print_usage(const char* program)
       << "  --selection-only              with --mesh-output: write the inputs and selections,\n"
       << "                                print their sizes and run nothing (to check the\n"
       << "                                shapes of a case file)\n"
-      << "  --note TEXT                   a line added to the notes of the report\n";
+      << "  --note TEXT                   a line added to the notes of the report\n"
+      << "  --levels l1,l2,...            run every case also on its mesh Loop-subdivided\n"
+      << "                                l times (default 0: native only); on subdivided\n"
+      << "                                meshes, CGAL ARAP (spokes and rims) and the spectral\n"
+      << "                                algorithm (both policies) run deform() only\n"
+      << "  --case-levels NAME=l1,l2,...  the levels of the case NAME (repeatable)\n";
 }
 
 std::vector<std::string> split(const std::string& text, char separator)
@@ -191,6 +199,28 @@ Options parse_options(int argc, char** argv)
       options.notes.push_back(value());
     else if(argument == "--selection-only")
       options.selection_only = true;
+    else if(argument == "--levels" || argument == "--case-levels")
+    {
+      std::string text = value();
+      std::string name;
+      if(argument == "--case-levels")
+      {
+        const std::size_t equal = text.find('=');
+        if(equal == std::string::npos)
+          throw std::invalid_argument("--case-levels expects NAME=l1,l2,...");
+        name = text.substr(0, equal);
+        text = text.substr(equal + 1);
+      }
+      std::vector<unsigned int> levels;
+      for(const std::string& part : split(text, ','))
+        levels.push_back(part == "0" ? 0u : to_positive_int(part, argument));
+      if(levels.empty())
+        throw std::invalid_argument(argument + " expects at least one level");
+      if(name.empty())
+        options.levels = levels;
+      else
+        options.case_levels[name] = levels;
+    }
     else
       throw std::invalid_argument("unknown argument '" + argument + "'");
   }
@@ -466,6 +496,7 @@ struct Case_report
   double diagonal = 0;
   std::string transformation;
   unsigned int cgal_long_iterations = 0;
+  unsigned int level = 0; // Loop subdivision steps applied to the mesh of the case
   double seconds = 0;
   std::vector<Run_result> results;
 };
@@ -529,6 +560,8 @@ void write_definitions(std::ostream& out, const Options& options)
          "angle between the two face normals was below 90° and exceeds 90° after the "
          "deformation (a fold or a sharp crease created by the deformation). Only pairs with a "
          "positive dot product at rest are candidates (their number is given per case).\n"
+      << "- *volume change*: the relative change of the volume enclosed by the mesh "
+         "(closed meshes only).\n"
       << "- *non-finite*: coordinates of the result that are NaN or infinite (the other "
          "measures are then not computed).\n"
       << "- CGAL ARAP: `CGAL::Surface_mesh_deformation<Surface_mesh>` with its default "
@@ -546,6 +579,74 @@ void write_definitions(std::ostream& out, const Options& options)
          "`EXACT_CONSTRAINTS` and `SOFT_CONSTRAINTS` policies. When `deform()` stops at its "
          "cap, the same object continues with `reset()`, the same targets and `deform("
       << options.long_iterations << ", 1e-4)`.\n";
+}
+
+std::string signed_percent(double value)
+{
+  if(std::isnan(value))
+    return "–";
+  return (value > 0 ? "+" : "") + format("%.1f", 100.0 * value) + " %";
+}
+
+/// One table over all cases and levels: the default `deform()` of CGAL ARAP
+/// and of the spectral algorithm (both policies), the measures that show a
+/// broken result (folds, stretched edges) and the ARAP energy against CGAL's.
+void write_sweep(std::ostream& out, const std::vector<Case_report>& cases)
+{
+  out << "\n## Summary over all cases and resolutions\n\n"
+      << "`deform()` with the defaults of each class (CGAL: at most 5 iterations; this package: "
+         "at most 10). *@k*: the mesh of the case Loop-subdivided k times. *energy / CGAL*: the "
+         "ARAP energy of the result over that of CGAL ARAP (spokes and rims) on the same "
+         "input. *limit*: on a subdivided mesh, 1.5 × the maximal edge change of the same "
+         "algorithm on the native mesh + 10 %, the bound a result free of resolution artefacts "
+         "stays under.\n\n"
+      << "| case | vertices | algorithm | folded pairs | edge change max | limit | edge change mean | "
+         "ARAP energy | energy / CGAL | volume change |\n"
+      << "|---|--:|---|--:|--:|--:|--:|--:|--:|--:|\n";
+  auto native_max_edge_change = [&cases](const std::string& name, const std::string& key) {
+    const std::string base = name.substr(0, name.find('@'));
+    for(const Case_report& c : cases)
+      if(c.name == base && c.skipped.empty())
+        for(const Run_result& r : c.results)
+          if(r.key == key && r.success)
+            return r.quality.max_edge_change;
+    return not_a_number;
+  };
+  for(const Case_report& c : cases)
+  {
+    if(!c.skipped.empty())
+      continue;
+    double cgal_energy = not_a_number;
+    for(const Run_result& r : c.results)
+      if(r.key == "cgal_spokes_and_rims" && r.success)
+        cgal_energy = r.quality.arap_energy;
+    for(const Run_result& r : c.results)
+    {
+      if(r.key != "cgal_spokes_and_rims" && r.key != "spectral_exact" && r.key != "spectral_soft")
+        continue;
+      const std::string name = r.key == "cgal_spokes_and_rims" ? "CGAL ARAP"
+                               : r.key == "spectral_exact"     ? "spectral, exact"
+                                                               : "spectral, soft";
+      out << "| " << c.name << " | " << c.vertices << " | " << name << " | ";
+      if(!r.success)
+      {
+        out << "failed | | | | | | |\n";
+        continue;
+      }
+      const Quality& q = r.quality;
+      std::string limit = "–";
+      if(c.level > 0)
+      {
+        const double bound = 1.5 * native_max_edge_change(c.name, r.key) + 0.1;
+        if(!std::isnan(bound))
+          limit = percent(bound) + (q.max_edge_change <= bound ? "" : " **exceeded**");
+      }
+      out << q.folded_pairs << " | " << percent(q.max_edge_change) << " | " << limit << " | "
+          << percent(q.mean_edge_change) << " | " << scientific(q.arap_energy) << " | "
+          << format("%.2f", q.arap_energy / cgal_energy) << " | " << signed_percent(q.volume_change)
+          << " |\n";
+    }
+  }
 }
 
 void write_report(const std::string& filename, const Options& options, const Run_info& run,
@@ -583,6 +684,7 @@ void write_report(const std::string& filename, const Options& options, const Run
       << "); definitions of the columns at the end\n";
   for(const std::string& note : options.notes)
     out << "- Note: " << note << "\n";
+  write_sweep(out, cases);
 
   for(const Case_report& c : cases)
   {
@@ -602,8 +704,8 @@ void write_report(const std::string& filename, const Options& options, const Run
         << " iterations; case run in " << fixed(c.seconds, 1) << " s\n\n";
     out << "| algorithm | iterations | preprocess | deform | handle residual max / D | "
            "handle residual RMS / D | outside ROI / D | ARAP energy | edge change mean | "
-           "edge change max | ROI border edge change max | folded pairs | non-finite |\n"
-        << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+           "edge change max | ROI border edge change max | folded pairs | volume change | non-finite |\n"
+        << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     for(const Run_result& r : c.results)
     {
       out << "| " << r.label << " | " << r.iterations << " | "
@@ -611,7 +713,7 @@ void write_report(const std::string& filename, const Options& options, const Run
           << duration(r.deform_seconds) << " | ";
       if(!r.success)
       {
-        out << "failed: " << r.message << " | | | | | | | | |\n";
+        out << "failed: " << r.message << " | | | | | | | | | |\n";
         continue;
       }
       const Quality& q = r.quality;
@@ -620,7 +722,7 @@ void write_report(const std::string& filename, const Options& options, const Run
           << percent(q.mean_edge_change) << " | " << percent(q.max_edge_change) << " | "
           << percent(q.max_border_edge_change) << " | "
           << (q.non_finite ? std::string("n/a") : std::to_string(q.folded_pairs)) << " | "
-          << q.non_finite << " |\n";
+          << signed_percent(q.volume_change) << " | " << q.non_finite << " |\n";
     }
   }
   out << "\n";
@@ -636,7 +738,8 @@ bool selected(const Options& options, const std::string& name)
          std::find(options.only.begin(), options.only.end(), name) != options.only.end();
 }
 
-void run_case(const Deformation_case& c, const Options& options, Case_report& report)
+void run_case(const Deformation_case& c, const Options& options, unsigned int level,
+              Case_report& report)
 {
   const Clock::time_point start = Clock::now();
   const Case_geometry g = case_geometry(c);
@@ -679,6 +782,28 @@ void run_case(const Deformation_case& c, const Options& options, Case_report& re
     std::cerr << "    (" << duration(seconds_since(since)) << ")" << std::endl;
   };
   Clock::time_point step = Clock::now();
+  if(level > 0)
+  {
+    // The resolution sweep: the default calls only, beside CGAL's default.
+    Options quick = options;
+    quick.long_iterations = 0;
+    run_cgal_algorithm<CGAL::SPOKES_AND_RIMS>(c, 0, "CGAL ARAP, spokes and rims",
+                                              "cgal_spokes_and_rims", results);
+    progress(step);
+    step = Clock::now();
+    const std::string m = "m = " + std::to_string(options.frequencies);
+    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
+        c, quick, CGAL::EXACT_CONSTRAINTS, "spectral dual Laplacian, exact, " + m,
+        "spectral_exact", results);
+    progress(step);
+    step = Clock::now();
+    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
+        c, quick, CGAL::SOFT_CONSTRAINTS, "spectral dual Laplacian, soft, " + m, "spectral_soft",
+        results);
+    progress(step);
+  }
+  else
+  {
   run_cgal_algorithm<CGAL::SPOKES_AND_RIMS>(c, report.cgal_long_iterations,
                                             "CGAL ARAP, spokes and rims", "cgal_spokes_and_rims",
                                             results);
@@ -707,6 +832,7 @@ void run_case(const Deformation_case& c, const Options& options, Case_report& re
   run_package_algorithm<CGAL::SPATIAL_DUAL_LAPLACIAN>(c, options, CGAL::EXACT_CONSTRAINTS,
                                                       "spatial dual Laplacian", "spatial", results);
   progress(step);
+  }
 
   for(Run_result& r : results)
     if(r.success)
@@ -748,23 +874,37 @@ int main(int argc, char** argv)
     {
       if(!selected(options, name))
         continue;
-      Case_report report;
-      report.name = name;
-      report.title = name + " (Botsch & Sorkine 2008)";
-      Deformation_case c;
-      std::string why_not;
-      if(options.botsch08_directory.empty())
-        report.skipped = "no directory of the Botsch & Sorkine 2008 cases given (--botsch08)";
-      else if(!read_botsch08_case(options.botsch08_directory, name, c, why_not))
-        report.skipped = why_not;
-      else
+      const auto specific = options.case_levels.find(name);
+      const std::vector<unsigned int>& levels =
+          specific != options.case_levels.end() ? specific->second : options.levels;
+      for(unsigned int level : levels)
       {
-        std::cerr << "case " << name << std::endl;
-        run_case(c, options, report);
+        const std::string suffix = level == 0 ? std::string() : "@" + std::to_string(level);
+        Case_report report;
+        report.name = name + suffix;
+        report.title = name + " (Botsch & Sorkine 2008)";
+        if(level > 0)
+          report.title += ", Loop-subdivided " + std::to_string(level) + (level == 1 ? " time" : " times");
+        Deformation_case c;
+        std::string why_not;
+        if(options.botsch08_directory.empty())
+          report.skipped = "no directory of the Botsch & Sorkine 2008 cases given (--botsch08)";
+        else if(!read_botsch08_case(options.botsch08_directory, name, c, why_not, level))
+          report.skipped = why_not;
+        else
+        {
+          c.name = report.name;
+          c.title = report.title;
+          std::cerr << "case " << c.name << std::endl;
+          run_case(c, options, level, report);
+          report.level = level;
+        }
+        reports.push_back(std::move(report));
+        if(!options.selection_only)
+          write_report(options.output, options, run, reports, false);
+        if(options.botsch08_directory.empty())
+          break;
       }
-      reports.push_back(std::move(report));
-      if(!options.selection_only)
-        write_report(options.output, options, run, reports, false);
     }
 
     // The cases of the case directory, by file name.
@@ -778,29 +918,41 @@ int main(int argc, char** argv)
       std::cerr << "warning: no .case file in " << options.case_directory << "\n";
     for(const std::string& file : case_files)
     {
-      Case_report report;
-      Deformation_case c;
-      try
+      const std::string stem = std::filesystem::path(file).stem().string();
+      const auto specific = options.case_levels.find(stem);
+      const std::vector<unsigned int>& levels =
+          specific != options.case_levels.end() ? specific->second : options.levels;
+      for(unsigned int level : levels)
       {
-        c = read_case_file(file, options.mesh_directory);
-      }
-      catch(const std::exception& e)
-      {
-        report.name = report.title = std::filesystem::path(file).stem().string();
-        if(!selected(options, report.name))
+        Case_report report;
+        Deformation_case c;
+        const std::string suffix = level == 0 ? std::string() : "@" + std::to_string(level);
+        try
+        {
+          c = read_case_file(file, options.mesh_directory, level);
+        }
+        catch(const std::exception& e)
+        {
+          report.name = report.title = stem + suffix;
+          if(!selected(options, stem))
+            continue;
+          report.skipped = e.what();
+          std::cerr << "skipped: " << e.what() << "\n";
+          reports.push_back(std::move(report));
           continue;
-        report.skipped = e.what();
-        std::cerr << "skipped: " << e.what() << "\n";
+        }
+        if(!selected(options, c.name))
+          continue;
+        c.name += suffix;
+        if(level > 0)
+          c.title += ", Loop-subdivided " + std::to_string(level) + (level == 1 ? " time" : " times");
+        std::cerr << "case " << c.name << std::endl;
+        run_case(c, options, level, report);
+        report.level = level;
         reports.push_back(std::move(report));
-        continue;
+        if(!options.selection_only)
+          write_report(options.output, options, run, reports, false);
       }
-      if(!selected(options, c.name))
-        continue;
-      std::cerr << "case " << c.name << std::endl;
-      run_case(c, options, report);
-      reports.push_back(std::move(report));
-      if(!options.selection_only)
-        write_report(options.output, options, run, reports, false);
     }
     if(!options.selection_only)
     {

@@ -19,9 +19,11 @@ output="${OUTPUT:-${repository}/benchmark/results/quality.md}"
 cmake -S "${repository}" -B "${build_dir}" -DCMAKE_BUILD_TYPE=Release -DSSMD_BUILD_BENCHMARKS=ON
 cmake --build "${build_dir}" --target quality_report -j 2
 SSMD_BUILD_DIR="${build_dir}" "${repository}/scripts/fetch_sample_meshes.sh"
-# The mesh of cases/bar_twist.case is generated.
+# The meshes of cases/bar_twist.case, tube_twist.case and strip_bend.case are generated.
 [[ -f "${build_dir}/data/meshes/twist_bar.off" ]] ||
   python3 "${repository}/benchmark/make_bar_mesh.py" "${build_dir}/data/meshes/twist_bar.off"
+[[ -f "${build_dir}/data/meshes/tube.off" && -f "${build_dir}/data/meshes/strip.off" ]] ||
+  python3 "${repository}/benchmark/make_shape_meshes.py" "${build_dir}/data/meshes"
 
 notes=()
 if revision="$(git -C "${repository}" rev-parse --short HEAD 2> /dev/null)"; then
