@@ -3,7 +3,11 @@
 by side, each with a caption, in one PNG.
 
 usage: render_meshes.py OUTPUT.png [--size 360] [--azimuth DEG] [--elevation DEG]
-                        [--up +Y] CAPTION=MESH [CAPTION=MESH ...]
+                        [--up +Y] [--position X,Y,Z --focus X,Y,Z]
+                        CAPTION=MESH [CAPTION=MESH ...]
+
+--position and --focus place the camera (a close-up of a detail); otherwise
+f3d frames the whole mesh from the azimuth and elevation.
 """
 import argparse
 import os
@@ -14,12 +18,14 @@ import tempfile
 from PIL import Image, ImageDraw, ImageFont
 
 
-def render(mesh, png, size, azimuth, elevation, up):
+def render(mesh, png, size, azimuth, elevation, up, position=None, focus=None):
     command = ["xvfb-run", "-a", "f3d", mesh, "--output=" + png,
                "--resolution=%d,%d" % (size, size), "--up=" + up,
                "--camera-azimuth-angle=%g" % azimuth,
                "--camera-elevation-angle=%g" % elevation,
                "--color=0.85,0.8,0.7", "--fxaa", "--bg-color=1,1,1"]
+    if position and focus:
+        command += ["--camera-position=" + position, "--camera-focal-point=" + focus]
     result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
     if result.returncode != 0 or not os.path.exists(png):
         sys.exit("rendering %s failed:\n%s" % (mesh, result.stdout.decode(errors="replace")))
@@ -41,6 +47,8 @@ def main():
     parser.add_argument("--azimuth", type=float, default=0.0)
     parser.add_argument("--elevation", type=float, default=0.0)
     parser.add_argument("--up", default="+Y")
+    parser.add_argument("--position", help="camera position X,Y,Z (with --focus)")
+    parser.add_argument("--focus", help="camera focal point X,Y,Z (with --position)")
     args = parser.parse_args()
 
     caption_height = 28
@@ -51,7 +59,8 @@ def main():
             if not mesh:
                 sys.exit("panels are given as CAPTION=MESH, got %r" % panel)
             png = os.path.join(workdir, "%d.png" % index)
-            render(mesh, png, args.size, args.azimuth, args.elevation, args.up)
+            render(mesh, png, args.size, args.azimuth, args.elevation, args.up, args.position,
+                   args.focus)
             pictures.append((caption, Image.open(png).convert("RGB")))
 
         sheet = Image.new("RGB", (args.size * len(pictures), args.size + caption_height), "white")
