@@ -4,10 +4,13 @@ by side, each with a caption, in one PNG.
 
 usage: render_meshes.py OUTPUT.png [--size 360] [--azimuth DEG] [--elevation DEG]
                         [--up +Y] [--position X,Y,Z --focus X,Y,Z]
+                        [--scalars NAME --range MIN,MAX]
                         CAPTION=MESH [CAPTION=MESH ...]
 
 --position and --focus place the camera (a close-up of a detail); otherwise
-f3d frames the whole mesh from the azimuth and elevation.
+f3d frames the whole mesh from the azimuth and elevation. --scalars colours
+the meshes by a point array of theirs (e.g. the 'edge_change' of the VTK files
+of edge_change_vtk.py), blue to red over --range, with a colour bar.
 """
 import argparse
 import os
@@ -18,7 +21,8 @@ import tempfile
 from PIL import Image, ImageDraw, ImageFont
 
 
-def render(mesh, png, size, azimuth, elevation, up, position=None, focus=None):
+def render(mesh, png, size, azimuth, elevation, up, position=None, focus=None, scalars=None,
+           value_range=None):
     command = ["xvfb-run", "-a", "f3d", mesh, "--output=" + png,
                "--resolution=%d,%d" % (size, size), "--up=" + up,
                "--camera-azimuth-angle=%g" % azimuth,
@@ -26,6 +30,10 @@ def render(mesh, png, size, azimuth, elevation, up, position=None, focus=None):
                "--color=0.85,0.8,0.7", "--fxaa", "--bg-color=1,1,1"]
     if position and focus:
         command += ["--camera-position=" + position, "--camera-focal-point=" + focus]
+    if scalars:
+        command += ["--scalars=" + scalars, "--comp=0", "--bar"]
+        if value_range:
+            command += ["--range=" + value_range]
     result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
     if result.returncode != 0 or not os.path.exists(png):
         sys.exit("rendering %s failed:\n%s" % (mesh, result.stdout.decode(errors="replace")))
@@ -49,6 +57,8 @@ def main():
     parser.add_argument("--up", default="+Y")
     parser.add_argument("--position", help="camera position X,Y,Z (with --focus)")
     parser.add_argument("--focus", help="camera focal point X,Y,Z (with --position)")
+    parser.add_argument("--scalars", help="colour by this point array")
+    parser.add_argument("--range", help="MIN,MAX of the colour scale (with --scalars)")
     args = parser.parse_args()
 
     caption_height = 28
@@ -60,7 +70,7 @@ def main():
                 sys.exit("panels are given as CAPTION=MESH, got %r" % panel)
             png = os.path.join(workdir, "%d.png" % index)
             render(mesh, png, args.size, args.azimuth, args.elevation, args.up, args.position,
-                   args.focus)
+                   args.focus, args.scalars, args.range)
             pictures.append((caption, Image.open(png).convert("RGB")))
 
         sheet = Image.new("RGB", (args.size * len(pictures), args.size + caption_height), "white")
