@@ -732,6 +732,21 @@ void write_report(const std::string& filename, const Options& options, const Run
 // ----------------------------------------------------------------------------
 // Driver
 
+// The Loop subdivision levels the case `name` runs at.
+const std::vector<unsigned int>& levels_of(const Options& options, const std::string& name)
+{
+  const auto specific = options.case_levels.find(name);
+  return specific != options.case_levels.end() ? specific->second : options.levels;
+}
+
+std::string level_suffix(unsigned int level) { return level == 0 ? std::string() : "@" + std::to_string(level); }
+
+std::string subdivided_title(const std::string& title, unsigned int level)
+{
+  return level == 0 ? title
+                    : title + ", Loop-subdivided " + std::to_string(level) + (level == 1 ? " time" : " times");
+}
+
 bool selected(const Options& options, const std::string& name)
 {
   return options.only.empty() ||
@@ -868,23 +883,25 @@ int main(int argc, char** argv)
     if(!options.mesh_output_directory.empty())
       std::filesystem::create_directories(options.mesh_output_directory);
     std::vector<Case_report> reports;
+    auto run_and_report = [&](const Deformation_case& c, unsigned int level, Case_report& report) {
+      std::cerr << "case " << c.name << std::endl;
+      run_case(c, options, level, report);
+      report.level = level;
+      reports.push_back(std::move(report));
+      if(!options.selection_only)
+        write_report(options.output, options, run, reports, false);
+    };
 
     // The Botsch & Sorkine 2008 cases.
     for(const std::string name : {"bar", "cactus", "cylinder", "plane"})
     {
       if(!selected(options, name))
         continue;
-      const auto specific = options.case_levels.find(name);
-      const std::vector<unsigned int>& levels =
-          specific != options.case_levels.end() ? specific->second : options.levels;
-      for(unsigned int level : levels)
+      for(unsigned int level : levels_of(options, name))
       {
-        const std::string suffix = level == 0 ? std::string() : "@" + std::to_string(level);
         Case_report report;
-        report.name = name + suffix;
-        report.title = name + " (Botsch & Sorkine 2008)";
-        if(level > 0)
-          report.title += ", Loop-subdivided " + std::to_string(level) + (level == 1 ? " time" : " times");
+        report.name = name + level_suffix(level);
+        report.title = subdivided_title(name + " (Botsch & Sorkine 2008)", level);
         Deformation_case c;
         std::string why_not;
         if(options.botsch08_directory.empty())
@@ -895,9 +912,8 @@ int main(int argc, char** argv)
         {
           c.name = report.name;
           c.title = report.title;
-          std::cerr << "case " << c.name << std::endl;
-          run_case(c, options, level, report);
-          report.level = level;
+          run_and_report(c, level, report);
+          continue;
         }
         reports.push_back(std::move(report));
         if(!options.selection_only)
@@ -919,14 +935,11 @@ int main(int argc, char** argv)
     for(const std::string& file : case_files)
     {
       const std::string stem = std::filesystem::path(file).stem().string();
-      const auto specific = options.case_levels.find(stem);
-      const std::vector<unsigned int>& levels =
-          specific != options.case_levels.end() ? specific->second : options.levels;
-      for(unsigned int level : levels)
+      for(unsigned int level : levels_of(options, stem))
       {
         Case_report report;
         Deformation_case c;
-        const std::string suffix = level == 0 ? std::string() : "@" + std::to_string(level);
+        const std::string suffix = level_suffix(level);
         try
         {
           c = read_case_file(file, options.mesh_directory, level);
@@ -944,14 +957,8 @@ int main(int argc, char** argv)
         if(!selected(options, c.name))
           continue;
         c.name += suffix;
-        if(level > 0)
-          c.title += ", Loop-subdivided " + std::to_string(level) + (level == 1 ? " time" : " times");
-        std::cerr << "case " << c.name << std::endl;
-        run_case(c, options, level, report);
-        report.level = level;
-        reports.push_back(std::move(report));
-        if(!options.selection_only)
-          write_report(options.output, options, run, reports, false);
+        c.title = subdivided_title(c.title, level);
+        run_and_report(c, level, report);
       }
     }
     if(!options.selection_only)
