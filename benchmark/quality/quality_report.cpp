@@ -796,57 +796,46 @@ void run_case(const Deformation_case& c, const Options& options, unsigned int le
                 << results[reported].iterations << std::endl;
     std::cerr << "    (" << duration(seconds_since(since)) << ")" << std::endl;
   };
+  // On subdivided meshes (the resolution sweep) only the default calls of
+  // CGAL ARAP (spokes and rims) and of the spectral algorithm run.
+  const bool sweep_only = level > 0;
+  Options spectral_options = options;
+  if(sweep_only)
+    spectral_options.long_iterations = 0;
+  const std::string m = "m = " + std::to_string(options.frequencies);
   Clock::time_point step = Clock::now();
-  if(level > 0)
-  {
-    // The resolution sweep: the default calls only, beside CGAL's default.
-    Options quick = options;
-    quick.long_iterations = 0;
-    run_cgal_algorithm<CGAL::SPOKES_AND_RIMS>(c, 0, "CGAL ARAP, spokes and rims",
-                                              "cgal_spokes_and_rims", results);
-    progress(step);
-    step = Clock::now();
-    const std::string m = "m = " + std::to_string(options.frequencies);
-    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
-        c, quick, CGAL::EXACT_CONSTRAINTS, "spectral dual Laplacian, exact, " + m,
-        "spectral_exact", results);
-    progress(step);
-    step = Clock::now();
-    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
-        c, quick, CGAL::SOFT_CONSTRAINTS, "spectral dual Laplacian, soft, " + m, "spectral_soft",
-        results);
-    progress(step);
-  }
-  else
-  {
-  run_cgal_algorithm<CGAL::SPOKES_AND_RIMS>(c, report.cgal_long_iterations,
+  run_cgal_algorithm<CGAL::SPOKES_AND_RIMS>(c, sweep_only ? 0 : report.cgal_long_iterations,
                                             "CGAL ARAP, spokes and rims", "cgal_spokes_and_rims",
                                             results);
   progress(step);
-  step = Clock::now();
-  run_cgal_algorithm<CGAL::ORIGINAL_ARAP>(c, report.cgal_long_iterations, "CGAL ARAP, original",
-                                          "cgal_original", results);
-  progress(step);
-  const std::string m = "m = " + std::to_string(options.frequencies);
-  step = Clock::now();
-  run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
-      c, options, CGAL::EXACT_CONSTRAINTS, "spectral dual Laplacian, exact, " + m, "spectral_exact",
-      results);
-  progress(step);
+  if(!sweep_only)
+  {
+    step = Clock::now();
+    run_cgal_algorithm<CGAL::ORIGINAL_ARAP>(c, report.cgal_long_iterations, "CGAL ARAP, original",
+                                            "cgal_original", results);
+    progress(step);
+  }
   step = Clock::now();
   run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
-      c, options, CGAL::SOFT_CONSTRAINTS, "spectral dual Laplacian, soft, " + m, "spectral_soft",
-      results);
+      c, spectral_options, CGAL::EXACT_CONSTRAINTS, "spectral dual Laplacian, exact, " + m,
+      "spectral_exact", results);
   progress(step);
   step = Clock::now();
-  run_package_algorithm<CGAL::SPECTRAL_LINEAR>(c, options, CGAL::EXACT_CONSTRAINTS,
-                                               "spectral linear, exact, " + m, "spectral_linear",
-                                               results);
+  run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
+      c, spectral_options, CGAL::SOFT_CONSTRAINTS, "spectral dual Laplacian, soft, " + m,
+      "spectral_soft", results);
   progress(step);
-  step = Clock::now();
-  run_package_algorithm<CGAL::SPATIAL_DUAL_LAPLACIAN>(c, options, CGAL::EXACT_CONSTRAINTS,
-                                                      "spatial dual Laplacian", "spatial", results);
-  progress(step);
+  if(!sweep_only)
+  {
+    step = Clock::now();
+    run_package_algorithm<CGAL::SPECTRAL_LINEAR>(c, options, CGAL::EXACT_CONSTRAINTS,
+                                                 "spectral linear, exact, " + m, "spectral_linear",
+                                                 results);
+    progress(step);
+    step = Clock::now();
+    run_package_algorithm<CGAL::SPATIAL_DUAL_LAPLACIAN>(c, options, CGAL::EXACT_CONSTRAINTS,
+                                                        "spatial dual Laplacian", "spatial", results);
+    progress(step);
   }
 
   for(Run_result& r : results)
