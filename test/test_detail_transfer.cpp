@@ -171,10 +171,13 @@ TEST_CASE("smooth rotation field: a one-ring squeezed into a line inherits the r
     const Point& p = grid.points[i];
     rest.row(static_cast<Eigen::Index>(i)) << p.x(), (p.x() > 0.5 ? 1e-9 * p.y() : p.y()), p.z();
   }
-  const Eigen::Matrix<double, Eigen::Dynamic, 3> weights =
-      Eigen::Matrix<double, Eigen::Dynamic, 3>::Constant(triangles.rows(), 3, 0.5);
+  internal::Triangle_arrays detailed;
+  detailed.triangles = triangles;
+  detailed.positions.resize(rest.rows(), 3);
+  for(std::size_t i = 0; i < grid.points.size(); ++i)
+    detailed.positions.row(static_cast<Eigen::Index>(i)) << grid.points[i].x(), grid.points[i].y(), grid.points[i].z();
   internal::Smooth_rotation_field field;
-  field.initialize(triangles, rest, weights);
+  field.initialize(internal::cotangent_stiffness(detailed), rest);
   CHECK(field.number_of_undetermined_vertices() > 100);
 
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(1.2, Eigen::Vector3d(0.3, -1, 0.5).normalized()).toRotationMatrix();

@@ -62,21 +62,12 @@ public:
   {
     typedef Spectral_deformation_error Error;
     m_rest = detailed.positions;
-    m_triangles = detailed.triangles;
     m_stiffness = cotangent_stiffness(detailed);
-    const Eigen::Index f_count = detailed.number_of_faces();
-    Eigen::Matrix<double, Eigen::Dynamic, 3> half_cotangents(f_count, 3);
-    for(Eigen::Index f = 0; f < f_count; ++f)
-      for(int k = 0; k < 3; ++k)
-      {
-        const Eigen::Vector3d u = corner_edge(m_rest, f, k, 1), v = corner_edge(m_rest, f, k, 2);
-        half_cotangents(f, k) = 0.5 * u.dot(v) / u.cross(v).norm();
-      }
     if(!smooth_rest.allFinite())
       throw Error(Error::SOLVER_FAILURE, "the smooth mesh has non-finite coordinates");
-    m_rotations.initialize(m_triangles, smooth_rest, half_cotangents);
+    m_rotations.initialize(m_stiffness, smooth_rest);
 
-    m_component = connected_components(m_triangles, m_rest.rows(), m_number_of_components);
+    m_component = connected_components(detailed.triangles, m_rest.rows(), m_number_of_components);
     m_soft_ready = false;
     m_dirichlet_ready = false;
   }
@@ -205,13 +196,7 @@ public:
   const Eigen::SparseMatrix<double>& stiffness() const { return m_stiffness; }
 
 private:
-  Eigen::Vector3d corner_edge(const Positions& x, Eigen::Index f, int corner, int shift) const
-  {
-    return (x.row(m_triangles(f, (corner + shift) % 3)) - x.row(m_triangles(f, corner))).transpose();
-  }
-
   Positions m_rest;
-  Triangles m_triangles;
   Eigen::SparseMatrix<double> m_stiffness;
   Smooth_rotation_field m_rotations;
   mutable std::vector<Eigen::Matrix3d> m_rotation_workspace;

@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <cmath>
@@ -51,44 +52,31 @@ inline Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& C)
 }
 
 /// The edges of a triangle mesh around each vertex, with their cotangent
-/// weights w_ij = ½(cot α_ij + cot β_ij) (the off-diagonal of the cotangent
-/// stiffness, negated), in compressed rows: the neighbours of vertex i are
-/// `neighbours[start[i] .. start[i + 1])`.
+/// weights w_ij = ½(cot α_ij + cot β_ij), read off the cotangent stiffness
+/// matrix (its off-diagonal, negated), in compressed rows: the neighbours of
+/// vertex i are `neighbours[start[i] .. start[i + 1])`.
 struct Cotangent_adjacency
 {
   std::vector<int> start;
   std::vector<int> neighbours;
   std::vector<double> weights;
 
-  /// `half_cotangents` (f×3): ½ cot of the angle at each corner of each face.
-  void initialize(const Triangles& triangles, Eigen::Index number_of_vertices,
-                  const Eigen::Matrix<double, Eigen::Dynamic, 3>& half_cotangents)
+  /// `stiffness` the cotangent stiffness matrix of the mesh (`cotangent_stiffness()`).
+  void initialize(const Eigen::SparseMatrix<double>& stiffness)
   {
-    std::vector<std::vector<std::pair<int, double>>> rows(static_cast<std::size_t>(number_of_vertices));
-    for(Eigen::Index f = 0; f < triangles.rows(); ++f)
-      for(int k = 0; k < 3; ++k)
-      {
-        const int i = triangles(f, (k + 1) % 3), j = triangles(f, (k + 2) % 3);
-        rows[static_cast<std::size_t>(i)].emplace_back(j, half_cotangents(f, k));
-        rows[static_cast<std::size_t>(j)].emplace_back(i, half_cotangents(f, k));
-      }
     start.assign(1, 0);
     neighbours.clear();
     weights.clear();
-    for(std::vector<std::pair<int, double>>& row : rows)
+    neighbours.reserve(static_cast<std::size_t>(stiffness.nonZeros()));
+    weights.reserve(static_cast<std::size_t>(stiffness.nonZeros()));
+    for(Eigen::Index i = 0; i < stiffness.outerSize(); ++i)
     {
-      std::sort(row.begin(), row.end(),
-                [](const std::pair<int, double>& a, const std::pair<int, double>& b) { return a.first < b.first; });
-      for(std::size_t a = 0; a < row.size(); ++a)
-      {
-        if(a > 0 && row[a].first == row[a - 1].first)
-          weights.back() += row[a].second;
-        else
+      for(Eigen::SparseMatrix<double>::InnerIterator entry(stiffness, i); entry; ++entry)
+        if(entry.row() != i)
         {
-          neighbours.push_back(row[a].first);
-          weights.push_back(row[a].second);
+          neighbours.push_back(static_cast<int>(entry.row()));
+          weights.push_back(-entry.value());
         }
-      }
       start.push_back(static_cast<int>(neighbours.size()));
     }
   }
@@ -119,13 +107,12 @@ public:
   /// smooth one-ring (0.01: extents in a ratio below 1 : 10).
   static constexpr double rank_two_ratio = 1e-2;
 
-  /// `smooth_rest` the rest positions of the smooth mesh of `triangles`,
-  /// `half_cotangents` (f×3) ½ cot of the angle at each corner of the
-  /// detailed mesh, which weigh the edges.
-  void initialize(const Triangles& triangles, const Positions& smooth_rest,
-                  const Eigen::Matrix<double, Eigen::Dynamic, 3>& half_cotangents)
+  /// `stiffness` the cotangent stiffness matrix of the detailed mesh, whose
+  /// weights weigh the edges; `smooth_rest` the rest positions of the smooth
+  /// mesh (same connectivity).
+  void initialize(const Eigen::SparseMatrix<double>& stiffness, const Positions& smooth_rest)
   {
-    m_adjacency.initialize(triangles, smooth_rest.rows(), half_cotangents);
+    m_adjacency.initialize(stiffness);
     m_smooth_rest = smooth_rest;
     const Eigen::Index n = smooth_rest.rows();
     std::vector<Eigen::Matrix3d> moments;
