@@ -30,9 +30,9 @@
 // Usage: benchmark_basis [mesh_directory] [options], see print_usage().
 
 #include <CGAL/Manifold_harmonics_basis.h>
-#include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
-#include <CGAL/Spectral_surface_mesh_deformation/cotangent_operators.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
+#include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

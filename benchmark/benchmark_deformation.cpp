@@ -37,11 +37,11 @@
 // Usage: benchmark_deformation --output FILE [options], see print_usage().
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
-#include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Detail_transfer.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Dual_mesh_operator.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Spectral_dual_laplacian_solver.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/basis_io.h>
+#include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
+#include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
 #include <CGAL/Surface_mesh_deformation.h>
 #include <CGAL/Deformation_Eigen_polar_closest_rotation_traits_3.h>
 

@@ -25,7 +25,7 @@
 
 #include <CGAL/Manifold_harmonics_basis.h>
 #include <CGAL/Spectral_surface_mesh_deformation.h>
-#include <CGAL/Spectral_surface_mesh_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_deformation/cotangent_operators.h>
 #include <CGAL/version.h>
 
 #include <Eigen/Dense>

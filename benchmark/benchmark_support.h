@@ -11,7 +11,7 @@
 #ifndef SSMD_BENCHMARK_SUPPORT_H
 #define SSMD_BENCHMARK_SUPPORT_H
 
-#include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 
 #include <unistd.h>
 

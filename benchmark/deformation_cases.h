@@ -15,9 +15,9 @@
 
 #include "benchmark_support.h"
 
-#include <CGAL/Spectral_surface_mesh_deformation/IO/deformation_selection.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/arap_energy.h>
+#include <CGAL/Spectral_deformation/IO/deformation_selection.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

@@ -7,7 +7,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Spectral_surface_mesh_deformation.h>
-#include <CGAL/Spectral_surface_mesh_deformation/IO/deformation_selection.h>
+#include <CGAL/Spectral_deformation/IO/deformation_selection.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <cstdlib>

@@ -6,7 +6,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/basis_io.h>
+#include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
 
 #include <cmath>
 #include <cstdint>

@@ -7,7 +7,7 @@
 // {0, 1, 2}; 16 finite numbers with the last row 0 0 0 1).
 #include "fuzz_common.h"
 
-#include <CGAL/Spectral_surface_mesh_deformation/IO/deformation_selection.h>
+#include <CGAL/Spectral_deformation/IO/deformation_selection.h>
 
 #include <sstream>
 

@@ -1,4 +1,4 @@
-#include <CGAL/Spectral_surface_mesh_deformation/IO/deformation_selection.h>
+#include <CGAL/Spectral_deformation/IO/deformation_selection.h>
 
 #include <catch2/catch.hpp>
 

@@ -3,8 +3,8 @@
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Detail_transfer.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Smooth_rotation_field.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Smooth_rotation_field.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <catch2/catch.hpp>

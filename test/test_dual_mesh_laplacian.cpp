@@ -1,7 +1,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Dual_mesh_laplacian.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Basis_panels.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Manifold_harmonics_basis.h>
-#include <CGAL/Spectral_surface_mesh_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_deformation/cotangent_operators.h>
 
 #include <catch2/catch.hpp>
 

@@ -6,7 +6,7 @@
 
 #include <CGAL/Manifold_harmonics_basis.h>
 #include <CGAL/Spectral_surface_mesh_deformation.h>
-#include <CGAL/Spectral_surface_mesh_deformation/IO/deformation_selection.h>
+#include <CGAL/Spectral_deformation/IO/deformation_selection.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/IO/polygon_soup_io.h>

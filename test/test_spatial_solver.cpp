@@ -1,7 +1,7 @@
 #include "test_meshes.h"
 
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Spatial_dual_laplacian_solver.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/arap_energy.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Spatial_dual_laplacian_solver.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
 
 #include <catch2/catch.hpp>
 

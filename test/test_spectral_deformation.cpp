@@ -1,8 +1,8 @@
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
-#include <CGAL/Spectral_surface_mesh_deformation/IO/deformation_selection.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/arap_energy.h>
+#include <CGAL/Spectral_deformation/IO/deformation_selection.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh_deformation.h>
 

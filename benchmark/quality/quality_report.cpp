@@ -25,10 +25,10 @@
 // Usage: quality_report --output FILE [options], see print_usage().
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
-#include <CGAL/Spectral_surface_mesh_deformation/IO/deformation_selection.h>
-#include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/arap_energy.h>
+#include <CGAL/Spectral_deformation/IO/deformation_selection.h>
+#include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
 #include <CGAL/Surface_mesh_deformation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -7,8 +7,8 @@
 #ifndef CGAL_DUAL_MESH_LAPLACIAN_H
 #define CGAL_DUAL_MESH_LAPLACIAN_H
 
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Dual_mesh_operator.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/iterator.h>

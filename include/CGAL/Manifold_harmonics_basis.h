@@ -7,12 +7,12 @@
 #ifndef CGAL_MANIFOLD_HARMONICS_BASIS_H
 #define CGAL_MANIFOLD_HARMONICS_BASIS_H
 
-#include <CGAL/Spectral_surface_mesh_deformation/Spectral_deformation_error.h>
-#include <CGAL/Spectral_surface_mesh_deformation/Block_lanczos_eigensolver_traits.h>
-#include <CGAL/Spectral_surface_mesh_deformation/Spectra_eigensolver_traits.h>
-#include <CGAL/Spectral_surface_mesh_deformation/cotangent_operators.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/basis_io.h>
+#include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_deformation/Block_lanczos_eigensolver_traits.h>
+#include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
+#include <CGAL/Spectral_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+#include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Named_function_parameters.h>

@@ -8,16 +8,16 @@
 #define CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_H
 
 #include <CGAL/Manifold_harmonics_basis.h>
-#include <CGAL/Spectral_surface_mesh_deformation/Spectral_deformation_error.h>
-#include <CGAL/Spectral_surface_mesh_deformation/Sparse_spd_solver_traits.h>
-#include <CGAL/Spectral_surface_mesh_deformation/Block_lanczos_eigensolver_traits.h>
-#include <CGAL/Spectral_surface_mesh_deformation/Spectra_eigensolver_traits.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Detail_transfer.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Spatial_dual_laplacian_solver.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Spectral_dual_laplacian_solver.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/Triangle_arrays.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/basis_io.h>
-#include <CGAL/Spectral_surface_mesh_deformation/internal/rigid_fit.h>
+#include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_deformation/Block_lanczos_eigensolver_traits.h>
+#include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Spatial_dual_laplacian_solver.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+#include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/rigid_fit.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/boost/graph/helpers.h>

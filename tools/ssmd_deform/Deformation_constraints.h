@@ -10,7 +10,7 @@
 #ifndef SSMD_TOOLS_DEFORMATION_CONSTRAINTS_H
 #define SSMD_TOOLS_DEFORMATION_CONSTRAINTS_H
 
-#include <CGAL/Spectral_surface_mesh_deformation/IO/deformation_selection.h>
+#include <CGAL/Spectral_deformation/IO/deformation_selection.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>

@@ -1,0 +1,216 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_DETAIL_TRANSFER_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_DETAIL_TRANSFER_H
+
+#include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Dirichlet_system.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Smooth_rotation_field.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// Detail transfer: the details of the detailed mesh follow the local
+/// rotations of the smooth mesh. R_i, the rotation of the smooth one-ring of
+/// vertex i from the smooth rest to the smooth deformed mesh, is fitted as in
+/// as-rigid-as-possible deformation (`Smooth_rotation_field`), and the
+/// detailed positions Y solve the Poisson system
+/// Q Y = Σ_ij w_ij ½(R_i + R_j)(v_i − v_j), Q the cotangent stiffness of the
+/// detailed mesh (the global step of as-rigid-as-possible deformation with
+/// the rotations of the smooth mesh). Each edge gets a rotated copy of its
+/// rest vector, so the right-hand side is bounded by that of the rest shape
+/// whatever the smooth mesh looks like (even where it is folded or squeezed
+/// into a curve); identity rotations give back V and a rigid motion its
+/// rigid image.
+///
+/// Botsch et al. (2006) transfer the whole deformation gradient
+/// T = E′E⁻¹, E = [e1, e2, n/√|n|], of each smooth face. It divides by the
+/// smooth rest face, and where a band-limited smooth mesh squeezes a thin
+/// feature into a near-curve its faces are slivers whose normal, and so the
+/// rotation part of T, is set by round-off: the details there crumple and
+/// fold. It also carries the stretch and shrinkage of the smooth mesh into
+/// the result, which rotations do not.
+///
+/// Two ways to fix the free translation of each connected component:
+/// - soft: the vertices that never move are prescribed (and one pinned
+///   vertex in a component without any, whose translation is then fitted to
+///   the constrained vertices), factored once per mesh (`prepare_soft()`);
+/// - exact: a Dirichlet problem with prescribed vertices, factored once per
+///   set of prescribed vertices; they keep their prescribed positions exactly.
+template <class SparseSPDSolverTraits = Default_deformation_sparse_spd_solver_traits>
+class Detail_transfer
+{
+public:
+  /// `detailed` validated; `smooth_rest` the smooth positions of the same
+  /// connectivity. Throws `Spectral_deformation_error` when `smooth_rest` is
+  /// not finite.
+  void initialize(const Triangle_arrays& detailed, const Positions& smooth_rest)
+  {
+    typedef Spectral_deformation_error Error;
+    m_rest = detailed.positions;
+    m_stiffness = cotangent_stiffness(detailed);
+    if(!smooth_rest.allFinite())
+      throw Error(Error::SOLVER_FAILURE, "the smooth mesh has non-finite coordinates");
+    m_rotations.initialize(m_stiffness, smooth_rest);
+
+    m_component = connected_components(detailed.triangles, m_rest.rows(), m_number_of_components);
+    m_soft_ready = false;
+    m_dirichlet_ready = false;
+  }
+
+  /// Soft policy: factor, once per mesh (later calls do nothing), the
+  /// system with the vertices flagged in `anchored` prescribed (the vertices
+  /// that never move), plus the first vertex of every component without an
+  /// anchored vertex, whose translation is fitted afterwards. Returns false
+  /// when the factorization fails.
+  bool prepare_soft(const std::vector<char>& anchored)
+  {
+    if(m_soft_ready)
+      return true;
+    std::vector<char> prescribed = anchored;
+    m_floating.assign(static_cast<std::size_t>(m_number_of_components), 1);
+    for(std::size_t i = 0; i < anchored.size(); ++i)
+      if(anchored[i])
+        m_floating[static_cast<std::size_t>(m_component[i])] = 0;
+    std::vector<char> pinned(static_cast<std::size_t>(m_number_of_components), 0);
+    for(std::size_t i = 0; i < prescribed.size(); ++i)
+    {
+      const std::size_t c = static_cast<std::size_t>(m_component[i]);
+      if(m_floating[c] && !pinned[c])
+      {
+        pinned[c] = 1;
+        prescribed[i] = 1;
+      }
+    }
+    m_soft_ready = m_soft.factor(m_stiffness, prescribed);
+    return m_soft_ready;
+  }
+
+  /// Exact policy: factor the system with the vertices flagged in
+  /// `prescribed` fixed. Returns false when a component has no prescribed
+  /// vertex or the factorization fails.
+  bool prepare_dirichlet(const std::vector<char>& prescribed)
+  {
+    m_dirichlet_ready = false;
+    std::vector<char> component_has(static_cast<std::size_t>(m_number_of_components), 0);
+    for(std::size_t i = 0; i < prescribed.size(); ++i)
+      if(prescribed[i])
+        component_has[static_cast<std::size_t>(m_component[i])] = 1;
+    for(char has : component_has)
+      if(!has)
+        return false;
+    m_dirichlet_ready = m_dirichlet.factor(m_stiffness, prescribed);
+    return m_dirichlet_ready;
+  }
+
+  /// The Poisson right-hand side for the smooth deformed positions.
+  Eigen::MatrixXd right_hand_side(const Positions& smooth_deformed) const
+  {
+    m_rotations.compute(smooth_deformed, m_rotation_workspace);
+    const std::vector<Eigen::Matrix3d>& R = m_rotation_workspace;
+    const Cotangent_adjacency& a = m_rotations.adjacency();
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_rest.rows());
+    Eigen::MatrixXd rhs(n, 3);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) if(n > 20000)
+#endif
+    for(std::ptrdiff_t i = 0; i < n; ++i)
+    {
+      const Eigen::Matrix3d& Ri = R[static_cast<std::size_t>(i)];
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
+      {
+        const int j = a.neighbours[static_cast<std::size_t>(s)];
+        const Eigen::Vector3d e = (m_rest.row(i) - m_rest.row(j)).transpose();
+        sum.noalias() += (0.5 * a.weights[static_cast<std::size_t>(s)]) * ((Ri + R[static_cast<std::size_t>(j)]) * e);
+      }
+      rhs.row(i) = sum.transpose();
+    }
+    return rhs;
+  }
+
+  /// Soft policy: positions with the anchored vertices at
+  /// `anchored_positions` (n×3, other rows ignored); a component without
+  /// anchored vertex is translated by the mean offset to `targets` at its
+  /// `constrained` vertices. Returns false when a solve fails.
+  bool transfer_soft(const Positions& smooth_deformed, const Positions& anchored_positions,
+                     const std::vector<int>& constrained, const Positions& targets,
+                     Positions& result) const
+  {
+    if(!m_soft_ready)
+      return false;
+    Eigen::MatrixXd prescribed = anchored_positions;
+    for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
+      if(m_floating[static_cast<std::size_t>(m_component[static_cast<std::size_t>(i)])])
+        prescribed.row(i).setZero(); // the pinned vertex, whichever it is
+    Eigen::MatrixXd y;
+    if(!m_soft.solve(right_hand_side(smooth_deformed), prescribed, y))
+      return false;
+    Eigen::MatrixXd offset = Eigen::MatrixXd::Zero(m_number_of_components, 3);
+    Eigen::VectorXd count = Eigen::VectorXd::Zero(m_number_of_components);
+    for(std::size_t k = 0; k < constrained.size(); ++k)
+    {
+      const int c = m_component[static_cast<std::size_t>(constrained[k])];
+      if(!m_floating[static_cast<std::size_t>(c)])
+        continue;
+      offset.row(c) += targets.row(static_cast<Eigen::Index>(k)) - y.row(constrained[k]);
+      count[c] += 1;
+    }
+    for(int c = 0; c < m_number_of_components; ++c)
+      if(count[c] > 0)
+        offset.row(c) /= count[c];
+    result.resize(m_rest.rows(), 3);
+    for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
+      result.row(i) = y.row(i) + offset.row(m_component[static_cast<std::size_t>(i)]);
+    return result.allFinite();
+  }
+
+  /// Exact policy: positions with the prescribed vertices at `prescribed_positions`
+  /// (n×3, rows of other vertices ignored).
+  bool transfer_exact(const Positions& smooth_deformed, const Positions& prescribed_positions,
+                      Positions& result) const
+  {
+    if(!m_dirichlet_ready)
+      return false;
+    Eigen::MatrixXd y;
+    if(!m_dirichlet.solve(right_hand_side(smooth_deformed), prescribed_positions, y))
+      return false;
+    result = y;
+    return result.allFinite();
+  }
+
+  const Eigen::SparseMatrix<double>& stiffness() const { return m_stiffness; }
+
+private:
+  Positions m_rest;
+  Eigen::SparseMatrix<double> m_stiffness;
+  Smooth_rotation_field m_rotations;
+  mutable std::vector<Eigen::Matrix3d> m_rotation_workspace;
+  std::vector<int> m_component;
+  int m_number_of_components = 0;
+  Dirichlet_system<SparseSPDSolverTraits> m_soft;
+  std::vector<char> m_floating; // per component: no anchored vertex
+  Dirichlet_system<SparseSPDSolverTraits> m_dirichlet;
+  bool m_soft_ready = false;
+  bool m_dirichlet_ready = false;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_DETAIL_TRANSFER_H

@@ -1,0 +1,241 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SMOOTH_ROTATION_FIELD_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SMOOTH_ROTATION_FIELD_H
+
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <deque>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// The rotation of a 3×3 matrix `C` closest to it in the Frobenius norm
+/// among proper rotations (the Kabsch solution of max tr(Rᵀ C)), from the
+/// eigenvectors of CᵀC: R = u₁v₁ᵀ + u₂v₂ᵀ + (u₁×u₂)(v₁×v₂)ᵀ with uₖ = C vₖ/σₖ.
+/// Needs σ₂ > 0 (C of rank two at least); returns the identity otherwise.
+inline Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& C)
+{
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(C.transpose() * C);
+  // Eigenvalues ascending: columns 2 and 1 are the two largest.
+  const Eigen::Vector3d v1 = eigen.eigenvectors().col(2), v2 = eigen.eigenvectors().col(1);
+  Eigen::Vector3d u1 = C * v1;
+  const double s1 = u1.norm();
+  if(!(s1 > 0))
+    return Eigen::Matrix3d::Identity();
+  u1 /= s1;
+  // Gram-Schmidt keeps u₂ orthogonal to u₁ when σ₂ is much smaller than σ₁.
+  Eigen::Vector3d u2 = C * v2;
+  u2 -= u2.dot(u1) * u1;
+  const double s2 = u2.norm();
+  if(!(s2 > 1e-12 * s1))
+    return Eigen::Matrix3d::Identity();
+  u2 /= s2;
+  Eigen::Vector3d w2 = v2 - v2.dot(v1) * v1;
+  w2.normalize();
+  return u1 * v1.transpose() + u2 * w2.transpose() + u1.cross(u2) * v1.cross(w2).transpose();
+}
+
+/// The edges of a triangle mesh around each vertex, with their cotangent
+/// weights w_ij = ½(cot α_ij + cot β_ij), read off the cotangent stiffness
+/// matrix (its off-diagonal, negated), in compressed rows: the neighbours of
+/// vertex i are `neighbours[start[i] .. start[i + 1])`.
+struct Cotangent_adjacency
+{
+  std::vector<int> start;
+  std::vector<int> neighbours;
+  std::vector<double> weights;
+
+  /// `stiffness` the cotangent stiffness matrix of the mesh (`cotangent_stiffness()`).
+  void initialize(const Eigen::SparseMatrix<double>& stiffness)
+  {
+    start.assign(1, 0);
+    neighbours.clear();
+    weights.clear();
+    neighbours.reserve(static_cast<std::size_t>(stiffness.nonZeros()));
+    weights.reserve(static_cast<std::size_t>(stiffness.nonZeros()));
+    for(Eigen::Index i = 0; i < stiffness.outerSize(); ++i)
+    {
+      for(Eigen::SparseMatrix<double>::InnerIterator entry(stiffness, i); entry; ++entry)
+        if(entry.row() != i)
+        {
+          neighbours.push_back(static_cast<int>(entry.row()));
+          weights.push_back(-entry.value());
+        }
+      start.push_back(static_cast<int>(neighbours.size()));
+    }
+  }
+
+  std::size_t number_of_vertices() const { return start.empty() ? 0 : start.size() - 1; }
+};
+
+/// The local rotations of a deformation of a smooth mesh, one per vertex:
+/// R_i maximizes Σ_j |w_ij| (s'_j − s'_i)ᵀ R (s_j − s_i) over the edges ij of
+/// the one-ring of i (the local step of as-rigid-as-possible fitting), with
+/// s the smooth rest and s' the smooth deformed positions.
+///
+/// A band-limited smooth mesh squeezes features narrower than its shortest
+/// wavelength (spikes, claws, thin tails) into near-curves. There the rest
+/// moment A_i = Σ_j |w_ij| (s_j − s_i)(s_j − s_i)ᵀ has numerical rank one,
+/// and the rotation about the curve is not determined by the one-ring: fitted
+/// alone, it follows round-off and crumples the details. Such a vertex
+/// (second eigenvalue of A_i below `rank_two_ratio` times the first) adds to
+/// its own covariance the mean covariance of its neighbours that are closer
+/// to a well-determined vertex, in breadth-first order, so that the rotation
+/// of the base of a thin feature carries on into it. Well-determined vertices
+/// are not changed. The order and the neighbours are fixed per rest shape.
+class Smooth_rotation_field
+{
+public:
+  /// The conditioning below which a one-ring does not determine a rotation:
+  /// a squared ratio of the second to the first principal extent of the
+  /// smooth one-ring (0.01: extents in a ratio below 1 : 10).
+  static constexpr double rank_two_ratio = 1e-2;
+
+  /// `stiffness` the cotangent stiffness matrix of the detailed mesh, whose
+  /// weights weigh the edges; `smooth_rest` the rest positions of the smooth
+  /// mesh (same connectivity).
+  void initialize(const Eigen::SparseMatrix<double>& stiffness, const Positions& smooth_rest)
+  {
+    m_adjacency.initialize(stiffness);
+    m_smooth_rest = smooth_rest;
+    const Eigen::Index n = smooth_rest.rows();
+    std::vector<Eigen::Matrix3d> moments;
+    accumulate(smooth_rest, moments);
+    std::vector<char> determined(static_cast<std::size_t>(n), 0);
+    for(Eigen::Index i = 0; i < n; ++i)
+    {
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+      eigen.computeDirect(moments[static_cast<std::size_t>(i)], Eigen::EigenvaluesOnly);
+      const Eigen::Vector3d lambda = eigen.eigenvalues(); // ascending
+      determined[static_cast<std::size_t>(i)] = (lambda[1] > rank_two_ratio * lambda[2]) ? 1 : 0;
+    }
+    order_undetermined(determined);
+  }
+
+  /// The edges and their cotangent weights.
+  const Cotangent_adjacency& adjacency() const { return m_adjacency; }
+
+  /// Number of vertices whose rotation is carried on from their neighbours.
+  std::size_t number_of_undetermined_vertices() const { return m_order.size(); }
+
+  /// The rotations (one per vertex) that carry the smooth rest mesh to
+  /// `smooth_deformed`.
+  void compute(const Positions& smooth_deformed, std::vector<Eigen::Matrix3d>& rotations) const
+  {
+    std::vector<Eigen::Matrix3d>& C = m_covariances;
+    accumulate(smooth_deformed, C);
+    for(std::size_t k = 0; k < m_order.size(); ++k)
+    {
+      const int begin = m_parent_start[k], end = m_parent_start[k + 1];
+      Eigen::Matrix3d inherited = Eigen::Matrix3d::Zero();
+      for(int p = begin; p < end; ++p)
+        inherited += C[static_cast<std::size_t>(m_parents[static_cast<std::size_t>(p)])];
+      C[static_cast<std::size_t>(m_order[k])] += inherited / double(end - begin);
+    }
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(C.size());
+    rotations.resize(C.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) if(n > 20000)
+#endif
+    for(std::ptrdiff_t i = 0; i < n; ++i)
+      rotations[static_cast<std::size_t>(i)] = nearest_rotation(C[static_cast<std::size_t>(i)]);
+  }
+
+private:
+  // Per vertex i, Σ_j |w_ij| (x_j − x_i)(s_j − s_i)ᵀ over its one-ring (with
+  // x = s, the rest moment).
+  void accumulate(const Positions& x, std::vector<Eigen::Matrix3d>& result) const
+  {
+    const Cotangent_adjacency& a = m_adjacency;
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.number_of_vertices());
+    result.resize(static_cast<std::size_t>(n));
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) if(n > 20000)
+#endif
+    for(std::ptrdiff_t i = 0; i < n; ++i)
+    {
+      Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
+      {
+        const int j = a.neighbours[static_cast<std::size_t>(s)];
+        const Eigen::Vector3d e = (m_smooth_rest.row(j) - m_smooth_rest.row(i)).transpose();
+        const Eigen::Vector3d d = (x.row(j) - x.row(i)).transpose();
+        c.noalias() += std::abs(a.weights[static_cast<std::size_t>(s)]) * d * e.transpose();
+      }
+      result[static_cast<std::size_t>(i)] = c;
+    }
+  }
+
+  // Breadth-first layers from the determined vertices through the
+  // undetermined ones; each undetermined vertex inherits from its neighbours
+  // of the previous layer.
+  void order_undetermined(const std::vector<char>& determined)
+  {
+    const Cotangent_adjacency& a = m_adjacency;
+    std::vector<int> layer(determined.size(), -1);
+    std::deque<int> queue;
+    for(std::size_t i = 0; i < determined.size(); ++i)
+      if(determined[i])
+      {
+        layer[i] = 0;
+        queue.push_back(static_cast<int>(i));
+      }
+    m_order.clear();
+    while(!queue.empty())
+    {
+      const int i = queue.front();
+      queue.pop_front();
+      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
+      {
+        const int j = a.neighbours[static_cast<std::size_t>(s)];
+        if(layer[static_cast<std::size_t>(j)] < 0)
+        {
+          layer[static_cast<std::size_t>(j)] = layer[static_cast<std::size_t>(i)] + 1;
+          queue.push_back(j);
+          m_order.push_back(j);
+        }
+      }
+    }
+    m_parents.clear();
+    m_parent_start.assign(1, 0);
+    for(int i : m_order)
+    {
+      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
+      {
+        const int j = a.neighbours[static_cast<std::size_t>(s)];
+        if(layer[static_cast<std::size_t>(j)] == layer[static_cast<std::size_t>(i)] - 1)
+          m_parents.push_back(j);
+      }
+      m_parent_start.push_back(static_cast<int>(m_parents.size()));
+    }
+  }
+
+  Cotangent_adjacency m_adjacency;
+  Positions m_smooth_rest;
+  std::vector<int> m_order;        // undetermined vertices, breadth-first
+  std::vector<int> m_parents;      // their neighbours in the previous layer
+  std::vector<int> m_parent_start; // offsets into m_parents, per entry of m_order
+  mutable std::vector<Eigen::Matrix3d> m_covariances;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SMOOTH_ROTATION_FIELD_H

@@ -1,0 +1,238 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPECTRAL_DUAL_LAPLACIAN_SOLVER_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPECTRAL_DUAL_LAPLACIAN_SOLVER_H
+
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// Dual Laplacian editing in the space of a manifold harmonics basis (the
+/// paper, eq. 6-7): positions S = H Ṽ, least squares of
+/// [L̂F H; w H_c] Ṽ = [l̂; w c] with the normal matrix
+/// Ã = G₀ + w² H_cᵀ H_c, G₀ = Hᵀ (L̂F)ᵀ L̂F H precomputed per mesh. Weights and
+/// signed heights of the dual coordinates are those of the smooth rest mesh
+/// S₀ = H Hᵀ M V, so that the residual at rest is zero.
+class Spectral_dual_laplacian_solver
+{
+public:
+  typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Positions;
+
+  /// `basis` n×m M-orthonormal, `mass` its lumped mass, `positions` the rest
+  /// positions (n×3), `triangles` the faces.
+  void initialize(const Eigen::MatrixXd& basis, const Eigen::VectorXd& mass,
+                  const Triangle_arrays& rest)
+  {
+    m_basis = &basis;
+    // The iteration reads its own copy of the basis, laid out for it.
+    assign_panels();
+    m_mass = mass;
+    m_dual = Dual_mesh_operator(rest.triangles, rest.number_of_vertices());
+    m_rest_coefficients = basis.transpose() * (mass.asDiagonal() * rest.positions);
+    m_smooth_rest = basis * m_rest_coefficients;
+    m_rest_coordinates = m_dual.evaluate(m_smooth_rest);
+    m_negative_heights = -m_rest_coordinates.heights;
+    const Eigen::SparseMatrix<double> LF = m_dual.laplacian_operator(m_rest_coordinates.weights);
+    const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(LF.transpose()) * LF;
+    // Never form the dense rows×m matrix L̂F H: (LᵀL) H is n×m like H.
+    m_G0 = basis.transpose() * (normal * basis);
+    m_G0 = 0.5 * (m_G0 + m_G0.transpose()).eval();
+    m_scale = std::sqrt(mass.sum()) *
+              (rest.positions.colwise().maxCoeff() - rest.positions.colwise().minCoeff()).norm();
+    m_factored = false;
+  }
+
+  /// Whether the iteration's copy of the basis is stored in float (the
+  /// arithmetic stays in double). The reduced systems amplify the rounding of
+  /// the copy: the result moved by about 1e-4 of the bounding-box diagonal
+  /// from the double one (armadillo arm, 104k vertices), which is why it is
+  /// not the default.
+  bool single_precision() const { return m_single_precision; }
+  /// Sets single_precision(); an initialized solver copies the basis again.
+  void set_single_precision(bool single)
+  {
+    if(single == m_single_precision)
+      return;
+    m_single_precision = single;
+    if(m_basis != nullptr)
+      assign_panels();
+  }
+
+  const Positions& smooth_rest() const { return m_smooth_rest; }
+  /// The smooth shape H `coefficients` (n×3).
+  Positions shape(const Eigen::MatrixXd& coefficients) const
+  {
+    Positions result;
+    multiply(coefficients, result);
+    return result;
+  }
+  const Eigen::MatrixXd& rest_coefficients() const { return m_rest_coefficients; }
+  const Dual_mesh_operator& dual_mesh() const { return m_dual; }
+
+  /// Factors Ã for the constrained vertices. Returns false when Ã is not
+  /// positive definite.
+  bool preprocess(const std::vector<int>& constrained, double weight)
+  {
+    const Eigen::MatrixXd& H = *m_basis;
+    m_constrained = constrained;
+    m_weight = weight;
+    m_constrained_rows.resize(static_cast<Eigen::Index>(constrained.size()), H.cols());
+    for(std::size_t k = 0; k < constrained.size(); ++k)
+      m_constrained_rows.row(static_cast<Eigen::Index>(k)) = H.row(constrained[k]);
+    Eigen::MatrixXd A = m_G0;
+    A.selfadjointView<Eigen::Lower>().rankUpdate(m_constrained_rows.transpose(), weight * weight);
+    A.triangularView<Eigen::StrictlyUpper>() = A.transpose();
+    m_regularization = 0;
+    m_cholesky.compute(A);
+    if(m_cholesky.info() != Eigen::Success)
+    {
+      // A constraint set can leave directions free (a tube held by one ring
+      // may stretch along its axis at no cost): a tiny Tikhonov term, towards
+      // the current shape in solve(), makes Ã definite and picks the solution
+      // that moves least in those directions.
+      m_regularization = 1e-10 * A.trace() / double(A.rows());
+      A.diagonal().array() += m_regularization;
+      m_cholesky.compute(A);
+    }
+    m_factored = (m_cholesky.info() == Eigen::Success);
+    return m_factored;
+  }
+
+  /// Iterates from the coefficients `coefficients` (m×3, in/out) towards the
+  /// smooth targets (k×3) of the constrained vertices: at most
+  /// 1 + max_iterations solves, each with the rest coordinates turned to the
+  /// dual normals of the current smooth shape. Stops when the M-norm of the
+  /// step, relative to √area × bounding-box diagonal, is below `tolerance`.
+  /// On failure `coefficients` is left untouched.
+  Iteration_report solve(const Positions& smooth_targets, Eigen::MatrixXd& coefficients,
+                         int max_iterations, double tolerance) const
+  {
+    Iteration_report report;
+    if(!m_factored)
+      return report.failed("the spectral solver is not preprocessed");
+    const Eigen::MatrixXd constraint_rhs =
+        m_weight * m_weight * (m_constrained_rows.transpose() * smooth_targets);
+    Eigen::MatrixXd current = coefficients;
+    Workspace& w = m_workspace;
+    multiply(current, w.shape);
+    w.normals = m_rest_coordinates.normals;
+    for(int iteration = 0; iteration <= max_iterations; ++iteration)
+    {
+      // The rest coordinates turned to the dual normals of the current shape,
+      // l̂ = -h n̂, brought back to the reduced space: Hᵀ (L̂F)ᵀ l̂.
+      m_dual.update_normals(w.shape, w.centroids, w.normals);
+      m_dual.apply_transpose(m_rest_coordinates.weights, m_negative_heights, w.normals, w.faces,
+                             w.vertices);
+      multiply_transpose(w.vertices, w.rhs);
+      w.rhs += constraint_rhs + m_regularization * current;
+      const Eigen::MatrixXd next = m_cholesky.solve(w.rhs);
+      if(!next.allFinite())
+        return report.failed("the iteration produced non-finite values");
+      const double step = (next - current).norm() / m_scale;
+      current = next;
+      if(report.stop_after(iteration, step, tolerance))
+      {
+        if(!report.success)
+          return report;
+        break;
+      }
+      if(iteration < max_iterations)
+        multiply(current, w.shape);
+    }
+    coefficients = current;
+    return report;
+  }
+
+  /// The coefficients (m×3) of the smooth field that meets `residuals` (k×3,
+  /// one row per constrained vertex of `preprocess()`) as the reduced system
+  /// meets its targets: the least squares solution of
+  /// [L̂F H; w H_c] α = [0; w residuals], with the factorization of Ã.
+  Eigen::MatrixXd fit_constraints(const Positions& residuals) const
+  {
+    return m_cholesky.solve(m_weight * m_weight * (m_constrained_rows.transpose() * residuals));
+  }
+
+private:
+  void assign_panels()
+  {
+    if(m_single_precision)
+    {
+      m_panels = Basis_panels<double>();
+      m_float_panels.assign(*m_basis);
+    }
+    else
+    {
+      m_float_panels = Basis_panels<float>();
+      m_panels.assign(*m_basis);
+    }
+  }
+
+  void multiply(const Eigen::MatrixXd& coefficients, Positions& shape) const
+  {
+    if(m_single_precision)
+      m_float_panels.multiply(coefficients, shape);
+    else
+      m_panels.multiply(coefficients, shape);
+  }
+
+  void multiply_transpose(const Positions& values, Eigen::MatrixXd& result) const
+  {
+    if(m_single_precision)
+      m_float_panels.multiply_transpose(values, result);
+    else
+      m_panels.multiply_transpose(values, result);
+  }
+
+  // Buffers of the iteration, kept between calls: fresh pages cost more than
+  // the arithmetic on them (a first touch is ~10 µs per 4 KiB page here).
+  struct Workspace
+  {
+    Positions shape, centroids, normals, faces, vertices;
+    Eigen::MatrixXd rhs;
+  };
+
+  const Eigen::MatrixXd* m_basis = nullptr;
+  Basis_panels<double> m_panels;
+  Basis_panels<float> m_float_panels;
+  bool m_single_precision = false;
+
+  Eigen::VectorXd m_mass;
+  Dual_mesh_operator m_dual;
+  Eigen::MatrixXd m_rest_coefficients;
+  Positions m_smooth_rest;
+  Dual_coordinates m_rest_coordinates;
+  Eigen::VectorXd m_negative_heights;
+  Eigen::MatrixXd m_G0;
+  double m_scale = 1;
+
+  std::vector<int> m_constrained;
+  Eigen::MatrixXd m_constrained_rows;
+  double m_weight = 1;
+  double m_regularization = 0;
+  Eigen::LLT<Eigen::MatrixXd> m_cholesky;
+  bool m_factored = false;
+  mutable Workspace m_workspace;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPECTRAL_DUAL_LAPLACIAN_SOLVER_H

@@ -1,0 +1,81 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_LARGEST_EIGENPAIRS_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_LARGEST_EIGENPAIRS_H
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+// With a LAPACK (CGAL_SSMD_USE_BLAS: OpenBLAS carries one), dsyevr computes
+// only the eigenvectors asked for, after the reduction to tridiagonal form;
+// Eigen's solver accumulates all of them. On the Rayleigh-Ritz matrices of
+// the block eigensolver (k × k, k of 300 to 600, m of them wanted) that is
+// the larger part of the cost.
+#ifdef CGAL_SSMD_USE_BLAS
+extern "C" void dsyevr_(const char* jobz, const char* range, const char* uplo, const int* n,
+                        double* a, const int* lda, const double* vl, const double* vu,
+                        const int* il, const int* iu, const double* abstol, int* m, double* w,
+                        double* z, const int* ldz, int* isuppz, double* work, const int* lwork,
+                        int* iwork, const int* liwork, int* info);
+#endif
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// The `count` largest eigenpairs of the symmetric matrix `A` (its lower
+/// triangle is read): `values` ascending, `vectors` (rows of A × count)
+/// orthonormal. Returns false when the eigensolver fails.
+inline bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index count,
+                                         Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
+{
+  const Eigen::Index n = A.rows();
+  if(count < 1 || count > n)
+    return false;
+#ifdef CGAL_SSMD_USE_BLAS
+  Eigen::MatrixXd a = A;
+  const int size = static_cast<int>(n);
+  const int first = static_cast<int>(n - count + 1), last = static_cast<int>(n);
+  const double unused = 0, absolute_tolerance = 0;
+  int found = 0, info = 0;
+  Eigen::VectorXd all_values(n);
+  vectors.resize(n, count);
+  std::vector<int> support(2 * static_cast<std::size_t>(count));
+  // Workspace query, then the solve.
+  double work_size = 0;
+  int iwork_size = 0, query = -1;
+  dsyevr_("V", "I", "L", &size, a.data(), &size, &unused, &unused, &first, &last,
+          &absolute_tolerance, &found, all_values.data(), vectors.data(), &size, support.data(),
+          &work_size, &query, &iwork_size, &query, &info);
+  if(info != 0)
+    return false;
+  const int lwork = static_cast<int>(work_size), liwork = iwork_size;
+  std::vector<double> work(static_cast<std::size_t>(lwork));
+  std::vector<int> iwork(static_cast<std::size_t>(liwork));
+  dsyevr_("V", "I", "L", &size, a.data(), &size, &unused, &unused, &first, &last,
+          &absolute_tolerance, &found, all_values.data(), vectors.data(), &size, support.data(),
+          work.data(), &lwork, iwork.data(), &liwork, &info);
+  if(info != 0 || found != static_cast<int>(count))
+    return false;
+  values = all_values.head(count);
+  return values.allFinite() && vectors.allFinite();
+#else
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(A);
+  if(solver.info() != Eigen::Success)
+    return false;
+  values = solver.eigenvalues().tail(count);
+  vectors = solver.eigenvectors().rightCols(count);
+  return true;
+#endif
+}
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_LARGEST_EIGENPAIRS_H

@@ -1,0 +1,47 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_DENSE_EIGENPAIRS_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_DENSE_EIGENPAIRS_H
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <string>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// The m smallest eigenpairs of `Q h = lambda M h`, `M = diag(mass)`, by a
+/// dense symmetric eigensolver: for the small problems where an iterative
+/// method has no advantage. Returns false with `message` set on failure.
+inline bool dense_generalized_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
+                                         const Eigen::VectorXd& mass, Eigen::Index m,
+                                         Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
+                                         std::string& message)
+{
+  // M^{-1/2} Q M^{-1/2} y = lambda y with h = M^{-1/2} y is the same problem,
+  // symmetric and standard because M is diagonal and positive.
+  const Eigen::VectorXd inv_sqrt_mass = mass.cwiseSqrt().cwiseInverse();
+  const Eigen::MatrixXd scaled =
+      inv_sqrt_mass.asDiagonal() * Eigen::MatrixXd(stiffness) * inv_sqrt_mass.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(scaled);
+  if(solver.info() != Eigen::Success)
+  {
+    message = "the dense eigensolver did not converge";
+    return false;
+  }
+  eigenvalues = solver.eigenvalues().head(m);
+  eigenvectors = inv_sqrt_mass.asDiagonal() * solver.eigenvectors().leftCols(m);
+  return true;
+}
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_DENSE_EIGENPAIRS_H

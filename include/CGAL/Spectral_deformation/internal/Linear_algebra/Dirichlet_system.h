@@ -1,0 +1,93 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_DIRICHLET_SYSTEM_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_DIRICHLET_SYSTEM_H
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <vector>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// A symmetric positive semi-definite system A X = B in which some unknowns
+/// are prescribed: A is restricted to the free unknowns and factored once,
+/// the prescribed values enter the right-hand side.
+template <class SparseSPDSolverTraits>
+class Dirichlet_system
+{
+public:
+  /// Factors the free block of `A`; `prescribed[i]` flags unknown i.
+  bool factor(const Eigen::SparseMatrix<double>& A, const std::vector<char>& prescribed)
+  {
+    const Eigen::Index n = A.rows();
+    m_free.clear();
+    m_free_index.assign(static_cast<std::size_t>(n), -1);
+    for(Eigen::Index i = 0; i < n; ++i)
+      if(!prescribed[static_cast<std::size_t>(i)])
+      {
+        m_free_index[static_cast<std::size_t>(i)] = static_cast<int>(m_free.size());
+        m_free.push_back(static_cast<int>(i));
+      }
+    std::vector<Eigen::Triplet<double>> inner, outer;
+    for(int k = 0; k < A.outerSize(); ++k)
+      for(Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it)
+      {
+        const int r = m_free_index[static_cast<std::size_t>(it.row())];
+        if(r < 0)
+          continue;
+        const int c = m_free_index[static_cast<std::size_t>(it.col())];
+        if(c >= 0)
+          inner.emplace_back(r, c, it.value());
+        else
+          outer.emplace_back(r, static_cast<int>(it.col()), it.value());
+      }
+    const Eigen::Index m = static_cast<Eigen::Index>(m_free.size());
+    Eigen::SparseMatrix<double> free_block(m, m);
+    free_block.setFromTriplets(inner.begin(), inner.end());
+    m_coupling.resize(m, n);
+    m_coupling.setFromTriplets(outer.begin(), outer.end());
+    return m == 0 || m_solver.factor(free_block);
+  }
+
+  /// Solves with the right-hand side `rhs` (n×d) and the values of the
+  /// prescribed unknowns taken from `prescribed_values` (n×d, other rows
+  /// ignored); `out` is n×d with the prescribed rows copied.
+  bool solve(const Eigen::MatrixXd& rhs, const Eigen::MatrixXd& prescribed_values,
+             Eigen::MatrixXd& out) const
+  {
+    const Eigen::Index m = static_cast<Eigen::Index>(m_free.size());
+    out = prescribed_values;
+    if(m == 0)
+      return true;
+    // The coupling block has prescribed columns only: free rows are not read.
+    const Eigen::MatrixXd coupled = m_coupling * prescribed_values;
+    Eigen::MatrixXd b(m, rhs.cols());
+    for(Eigen::Index r = 0; r < m; ++r)
+      b.row(r) = rhs.row(m_free[static_cast<std::size_t>(r)]) - coupled.row(r);
+    Eigen::MatrixXd x;
+    if(!m_solver.solve(b, x))
+      return false;
+    for(Eigen::Index r = 0; r < m; ++r)
+      out.row(m_free[static_cast<std::size_t>(r)]) = x.row(r);
+    return true;
+  }
+
+private:
+  SparseSPDSolverTraits m_solver;
+  std::vector<int> m_free;
+  std::vector<int> m_free_index;
+  Eigen::SparseMatrix<double> m_coupling;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_DIRICHLET_SYSTEM_H

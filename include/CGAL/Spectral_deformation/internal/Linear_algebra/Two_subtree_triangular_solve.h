@@ -1,0 +1,235 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_TWO_SUBTREE_TRIANGULAR_SOLVE_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_TWO_SUBTREE_TRIANGULAR_SOLVE_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+// Solves L Lᵀ y = b with a simplicial Cholesky factor L (compressed columns,
+// rows sorted, diagonal first, columns in a postorder of the elimination
+// tree, as CHOLMOD leaves them) on two threads, each on its own subtrees.
+//
+// The columns of a subtree only update rows of the subtree and of its
+// ancestors. The tree is cut below a few top columns (the ancestors of
+// everything, typically the last separator of the ordering) into subtrees
+// dealt to the two threads with about equal numbers of entries: the forward
+// solve runs the subtrees concurrently, each thread collecting its updates
+// of the top rows apart, then the top columns; the backward solve runs the
+// top columns, then the subtrees concurrently.
+//
+// Both threads read the whole block of right-hand sides stored row by row,
+// so that an entry of L updates all of them at once (the reason to prefer
+// this to CHOLMOD's own solve, which reads L once per four right-hand sides
+// and, split by right-hand sides over two threads, twice per block of eight:
+// 0.64 to 0.77 s against 0.89 to 0.97 s for 40 blocks of eight at 104k
+// vertices, 3.0 to 3.15 s against 3.4 to 3.8 s at 416k).
+class Two_subtree_triangular_solve
+{
+public:
+  // Analyzes the pattern of L (n columns, `starts` of n + 1 column starts,
+  // `rows` the row indices). `usable()` tells whether the split was found:
+  // a pattern that is not sorted and postordered, or a tree whose top
+  // columns would hold more than a quarter of the entries, is left to the
+  // caller's sequential solve.
+  void analyze(int n, const int* starts, const int* rows)
+  {
+    *this = Two_subtree_triangular_solve();
+    if(n < 2)
+      return;
+    std::vector<int> parent(n, -1), first_descendant(n), size(n, 1);
+    std::vector<double> entries(n), subtree_entries(n);
+    for(int j = 0; j < n; ++j)
+    {
+      if(starts[j + 1] <= starts[j] || rows[starts[j]] != j)
+        return;
+      for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
+        if(rows[k] <= rows[k - 1])
+          return;
+      if(starts[j + 1] - starts[j] > 1)
+        parent[j] = rows[starts[j] + 1];
+      entries[j] = subtree_entries[j] = double(starts[j + 1] - starts[j]);
+      first_descendant[j] = j;
+    }
+    for(int j = 0; j < n; ++j)
+      if(parent[j] >= 0)
+      {
+        subtree_entries[parent[j]] += subtree_entries[j];
+        size[parent[j]] += size[j];
+        first_descendant[parent[j]] = (std::min)(first_descendant[parent[j]], first_descendant[j]);
+      }
+    // In a postorder, the subtree of j is the range [first descendant, j].
+    for(int j = 0; j < n; ++j)
+      if(size[j] != j - first_descendant[j] + 1)
+        return;
+
+    std::vector<std::vector<int>> children(n);
+    std::vector<int> candidates;
+    double total = 0;
+    for(int j = 0; j < n; ++j)
+    {
+      total += entries[j];
+      if(parent[j] >= 0)
+        children[parent[j]].push_back(j);
+      else
+        candidates.push_back(j);
+    }
+    // Deal the candidate subtrees, largest first, to the lighter thread;
+    // while that leaves them unbalanced, replace the largest by its
+    // children, its root becoming a top column.
+    std::vector<int> top;
+    double top_entries = 0;
+    std::vector<int> assignment;
+    double load[2];
+    for(;;)
+    {
+      std::sort(candidates.begin(), candidates.end(),
+                [&](int a, int b) { return subtree_entries[a] > subtree_entries[b]; });
+      load[0] = load[1] = 0;
+      assignment.assign(candidates.size(), 0);
+      for(std::size_t c = 0; c < candidates.size(); ++c)
+      {
+        assignment[c] = load[0] <= load[1] ? 0 : 1;
+        load[assignment[c]] += subtree_entries[candidates[c]];
+      }
+      if(std::abs(load[0] - load[1]) <= 0.02 * total)
+        break;
+      const int largest = candidates.front();
+      top.push_back(largest);
+      top_entries += entries[largest];
+      if(top_entries > 0.25 * total)
+        return;
+      candidates.erase(candidates.begin());
+      candidates.insert(candidates.end(), children[largest].begin(), children[largest].end());
+      if(candidates.empty())
+        return;
+    }
+    for(std::size_t c = 0; c < candidates.size(); ++c)
+      m_ranges[assignment[c]].emplace_back(first_descendant[candidates[c]], candidates[c]);
+    for(std::vector<std::pair<int, int>>& ranges : m_ranges)
+      std::sort(ranges.begin(), ranges.end());
+    std::sort(top.begin(), top.end());
+    m_top = std::move(top);
+    m_top_slot.assign(n, -1);
+    for(std::size_t t = 0; t < m_top.size(); ++t)
+      m_top_slot[m_top[t]] = static_cast<int>(t);
+    m_usable = true;
+  }
+
+  bool usable() const { return m_usable; }
+
+  // Overwrites y (n rows of W values, stored row after row) with
+  // (L Lᵀ)^{-1} y; `starts`, `rows` as given to analyze(), `values` the
+  // entries of L.
+  template <int W>
+  void solve(const int* starts, const int* rows, const double* values, double* y) const
+  {
+    const std::size_t top_size = m_top.size();
+    std::vector<double> top_updates[2];
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(2) schedule(static, 1)
+#endif
+    for(int thread = 0; thread < 2; ++thread)
+    {
+      std::vector<double>& updates = top_updates[thread];
+      updates.assign(top_size * W, 0.0);
+      for(const std::pair<int, int>& range : m_ranges[thread])
+        for(int j = range.first; j <= range.second; ++j)
+        {
+          double solved[W]; // a copy, so that the updates below cannot alias it
+          divide_by_diagonal<W>(j, starts, values, y, solved);
+          for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
+          {
+            const int i = rows[k];
+            double* target = i <= range.second ? y + std::size_t(W) * i
+                                               : updates.data() + std::size_t(W) * m_top_slot[i];
+            const double l = values[k];
+            for(int c = 0; c < W; ++c)
+              target[c] -= l * solved[c];
+          }
+        }
+    }
+    for(std::size_t t = 0; t < top_size; ++t)
+    {
+      double* y_t = y + std::size_t(W) * m_top[t];
+      for(int c = 0; c < W; ++c)
+        y_t[c] += top_updates[0][t * W + c] + top_updates[1][t * W + c];
+    }
+    for(const int j : m_top)
+    {
+      double solved[W];
+      divide_by_diagonal<W>(j, starts, values, y, solved);
+      for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
+      {
+        double* y_i = y + std::size_t(W) * rows[k];
+        const double l = values[k];
+        for(int c = 0; c < W; ++c)
+          y_i[c] -= l * solved[c];
+      }
+    }
+
+    auto backward = [&](int j) {
+      double* y_j = y + std::size_t(W) * j;
+      double sum[W];
+      for(int c = 0; c < W; ++c)
+        sum[c] = y_j[c];
+      for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
+      {
+        const double* y_i = y + std::size_t(W) * rows[k];
+        const double l = values[k];
+        for(int c = 0; c < W; ++c)
+          sum[c] -= l * y_i[c];
+      }
+      const double inverse_diagonal = 1.0 / values[starts[j]];
+      for(int c = 0; c < W; ++c)
+        y_j[c] = sum[c] * inverse_diagonal;
+    };
+    for(auto j = m_top.rbegin(); j != m_top.rend(); ++j)
+      backward(*j);
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(2) schedule(static, 1)
+#endif
+    for(int thread = 0; thread < 2; ++thread)
+      for(auto range = m_ranges[thread].rbegin(); range != m_ranges[thread].rend(); ++range)
+        for(int j = range->second; j >= range->first; --j)
+          backward(j);
+  }
+
+private:
+  // y_j /= L_jj, also copied into `solved`.
+  template <int W>
+  static void divide_by_diagonal(int j, const int* starts, const double* values, double* y,
+                                 double* solved)
+  {
+    double* y_j = y + std::size_t(W) * j;
+    const double inverse_diagonal = 1.0 / values[starts[j]];
+    for(int c = 0; c < W; ++c)
+      solved[c] = y_j[c] = y_j[c] * inverse_diagonal;
+  }
+
+  std::vector<std::pair<int, int>> m_ranges[2]; // column ranges of each thread's subtrees
+  std::vector<int> m_top;                       // the other columns, increasing
+  std::vector<int> m_top_slot;                  // column -> index in m_top, or -1
+  bool m_usable = false;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_TWO_SUBTREE_TRIANGULAR_SOLVE_H
