@@ -27,9 +27,9 @@ namespace internal {
 /// contiguous block. Both products then stream through H once, in memory
 /// order, with a panel of S or X in the first-level cache. Eigen's general
 /// products pack H into blocks first, which costs about as much as the
-/// product itself when the other factor has three columns (measured: 2.3×
-/// slower at n = 96k, m = 100). The panels are shared by the threads of an
-/// OpenMP team when the code is compiled with OpenMP.
+/// product itself when the other factor has three columns. The panels are
+/// shared by the threads of an OpenMP team when the code is compiled with
+/// OpenMP.
 ///
 /// `Scalar` is the storage type (`double`, or `float` to halve the memory
 /// traffic). The arithmetic is in double whatever the storage: the
