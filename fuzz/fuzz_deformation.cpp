@@ -365,7 +365,8 @@ private:
       case 13:
       {
         const std::size_t m = m_in.ConsumeIntegralInRange<std::size_t>(0, slots() + 3);
-        check_call(d, op, [&] { d.set_number_of_frequencies(m); });
+        if constexpr(Deformation::has_basis)
+          check_call(d, op, [&] { d.set_number_of_frequencies(m); });
         break;
       }
       case 14:
@@ -373,13 +374,15 @@ private:
         double w = std::pow(10.0, m_in.ConsumeIntegralInRange(-6, 6));
         if(m_in.ConsumeIntegralInRange(0, 3) == 0)
           w = m_in.ConsumeBool() ? 0.0 : special_value(m_in);
-        check_call(d, op, [&] { d.set_constraint_weight(w); });
+        if constexpr(Deformation::has_basis)
+          check_call(d, op, [&] { d.set_constraint_weight(w); });
         break;
       }
       case 15:
       {
         const auto policy = m_in.ConsumeBool() ? CGAL::EXACT_CONSTRAINTS : CGAL::SOFT_CONSTRAINTS;
-        check_call(d, op, [&] { d.set_constraint_policy(policy); });
+        if constexpr(Deformation::has_basis)
+          check_call(d, op, [&] { d.set_constraint_policy(policy); });
         break;
       }
       case 16:
@@ -387,6 +390,7 @@ private:
         // Basis cache round trip, the file possibly damaged.
         const int damage = m_in.ConsumeIntegralInRange(0, 2);
         const std::size_t where = m_in.ConsumeIntegral<std::uint16_t>();
+        if constexpr(Deformation::has_basis)
         check_call(d, op, [&] {
           std::ostringstream out;
           d.save_basis(out);

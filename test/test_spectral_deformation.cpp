@@ -145,8 +145,11 @@ Run deform_bar(const Soup& soup, const internal::Rigid_motion& bottom_motion,
   deformation.insert_roi_vertices(all.begin(), all.end());
   deformation.insert_control_vertices(bottom.begin(), bottom.end());
   deformation.insert_control_vertices(top.begin(), top.end());
-  deformation.set_number_of_frequencies(m);
-  deformation.set_constraint_policy(policy);
+  if constexpr(Deformation::has_basis)
+  {
+    deformation.set_number_of_frequencies(m);
+    deformation.set_constraint_policy(policy);
+  }
   REQUIRE(deformation.preprocess());
   auto index = CGAL::get_initialized_vertex_index_map(mesh);
   for(auto v : bottom)
@@ -340,7 +343,10 @@ TEST_CASE("iteration lowers the ARAP energy of a twist; the spectral result appr
   const double e_linear = internal::arap_energy(rest, linear.after);
   const double e_iterated = internal::arap_energy(rest, iterated.after);
   INFO("ARAP energy: linear " << e_linear << ", iterated " << e_iterated);
-  CHECK(e_iterated < 0.5 * e_linear);
+  // The detail transfer removes the stretch of the smooth mesh from both
+  // results, which narrows the gap between them: the iteration still takes
+  // off close to half of the energy.
+  CHECK(e_iterated < 0.6 * e_linear);
 
   // Bend (the spectral and spatial solvers agree better and better as m grows).
   const internal::Rigid_motion bend = motion(pi / 4, Eigen::Vector3d::UnitX(), Eigen::Vector3d(0, 0, 5.0));

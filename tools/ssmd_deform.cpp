@@ -324,17 +324,20 @@ private:
                                                 Progress_bar& progress_bar) const
   {
     std::unique_ptr<Deformation> deformation(new Deformation(mesh));
-    deformation->set_number_of_frequencies(m_options.frequencies);
     deformation->set_iterations(m_options.iterations);
     deformation->set_tolerance(m_options.tolerance);
-    deformation->set_constraint_weight(m_options.constraint_weight);
-    deformation->set_constraint_policy(m_options.policy == Deformation_tool::Policy::EXACT
-                                           ? CGAL::EXACT_CONSTRAINTS
-                                           : CGAL::SOFT_CONSTRAINTS);
-    Eigensolver_traits eigensolver;
-    eigensolver.set_progress_callback(
-        [&progress_bar](const Eigensolver_traits::Progress& progress) { progress_bar(progress); });
-    deformation->set_eigensolver_traits(eigensolver);
+    if constexpr(Deformation::has_basis)
+    {
+      deformation->set_number_of_frequencies(m_options.frequencies);
+      deformation->set_constraint_weight(m_options.constraint_weight);
+      deformation->set_constraint_policy(m_options.policy == Deformation_tool::Policy::EXACT
+                                             ? CGAL::EXACT_CONSTRAINTS
+                                             : CGAL::SOFT_CONSTRAINTS);
+      Eigensolver_traits eigensolver;
+      eigensolver.set_progress_callback(
+          [&progress_bar](const Eigensolver_traits::Progress& progress) { progress_bar(progress); });
+      deformation->set_eigensolver_traits(eigensolver);
+    }
     for(Vertex_index v : mesh.vertices())
       if(constraints.in_roi[v.idx()])
         deformation->insert_roi_vertex(v);
@@ -377,7 +380,7 @@ private:
   void deform(Mesh& mesh, const Deformation_tool::Deformation_constraints& constraints)
   {
     typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, TAG> Deformation;
-    const bool uses_basis = (TAG != CGAL::SPATIAL_DUAL_LAPLACIAN);
+    constexpr bool uses_basis = Deformation::has_basis;
     const bool interactive = !m_options.quiet && ::isatty(STDERR_FILENO);
     Progress_bar progress_bar(std::cerr, interactive);
 
@@ -396,7 +399,9 @@ private:
             ? m_options.mesh_file + ".ssmd-basis-m" + std::to_string(m_options.frequencies)
             : m_options.basis_cache_file;
     const bool use_cache = uses_basis && m_options.use_cache;
-    bool loaded = use_cache && load_cache(*deformation, cache_file);
+    bool loaded = false;
+    if constexpr(uses_basis)
+      loaded = use_cache && load_cache(*deformation, cache_file);
 
     bool prepared = deformation->preprocess();
     progress_bar.finish();
@@ -435,13 +440,16 @@ private:
              << (m_report.dense_eigensolve ? std::string("dense solver")
                                            : std::to_string(m_report.eigensolver_solves) + " Lanczos solves")
              << ")";
-      if(use_cache)
+      if constexpr(uses_basis)
       {
-        const std::string failure = save_basis_cache(*deformation, cache_file);
-        if(failure.empty())
-          origin << ", saved to the cache " << cache_file;
-        else
-          warn("cannot write the basis cache " + cache_file + ": " + failure);
+        if(use_cache)
+        {
+          const std::string failure = save_basis_cache(*deformation, cache_file);
+          if(failure.empty())
+            origin << ", saved to the cache " << cache_file;
+          else
+            warn("cannot write the basis cache " + cache_file + ": " + failure);
+        }
       }
       m_report.basis_origin = origin.str();
     }

@@ -386,8 +386,11 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
   Mesh mesh = c.mesh;
   Spectral_deformation<TAG> deformation(mesh);
   select_vertices(deformation, c);
-  deformation.set_number_of_frequencies(options.frequencies);
-  deformation.set_constraint_policy(policy);
+  if constexpr(Spectral_deformation<TAG>::has_basis)
+  {
+    deformation.set_number_of_frequencies(options.frequencies);
+    deformation.set_constraint_policy(policy);
+  }
 
   Run_result first;
   first.label = label + ", `deform()`";

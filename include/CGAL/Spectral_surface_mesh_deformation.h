@@ -8,17 +8,17 @@
 #define CGAL_SPECTRAL_SURFACE_MESH_DEFORMATION_H
 
 #include <CGAL/Manifold_harmonics_basis.h>
-#include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
-#include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/Block_lanczos_eigensolver_traits.h>
-#include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Spatial_dual_laplacian_solver.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
-#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+#include <CGAL/Spectral_deformation/Deformation_options.h>
+#include <CGAL/Spectral_deformation/Deformation_reports.h>
+#include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/rigid_fit.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Pipeline_selector.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/Default.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -36,96 +36,6 @@
 #include <vector>
 
 namespace CGAL {
-
-/// \ingroup PkgSpectralSurfaceMeshDeformationRef
-/// The algorithms of `Spectral_surface_mesh_deformation`, its template
-/// parameter `TAG`.
-enum Spectral_deformation_algorithm_tag {
-  /// The paper's algorithm (the default): dual Laplacian editing in the space
-  /// of the first `m` manifold harmonics, iterated so that the dual Laplacian
-  /// coordinates follow the local rotations, then detail transfer.
-  SPECTRAL_DUAL_LAPLACIAN,
-  /// The same reduced system solved once with the dual Laplacian coordinates
-  /// of the rest shape, then detail transfer: the linear spectral solution
-  /// the paper compares against, which cannot follow large rotations.
-  /// Every `deform()` starts again from the rest shape, and the number of
-  /// iterations is not used.
-  SPECTRAL_LINEAR,
-  /// Dual Laplacian editing of Au et al.\ 2006 on the detailed region, the
-  /// paper's spatial baseline: a sparse system of the size of the region,
-  /// factored once per constraint set, with the constrained vertices
-  /// eliminated (they land exactly on their targets). There is no basis and
-  /// no detail transfer; the constraint weight and the constraint policy are
-  /// not used.
-  SPATIAL_DUAL_LAPLACIAN
-};
-
-/// \ingroup PkgSpectralSurfaceMeshDeformationRef
-/// How the spectral algorithms of `Spectral_surface_mesh_deformation` meet
-/// the constraints (`SPATIAL_DUAL_LAPLACIAN` always meets them exactly).
-///
-/// In both policies the reduced solve meets the constraints of the smooth
-/// mesh in the least-squares sense, and the vertices outside the region of
-/// interest are never moved; the policies differ in the detail transfer.
-enum Spectral_constraint_policy {
-  /// CGAL's semantics (the default): control vertices land exactly on their
-  /// targets and the region of interest joins the fixed vertices around it.
-  /// The detail transfer is a Poisson problem in which the control vertices
-  /// and the fixed vertices are prescribed; `preprocess()` factors it once
-  /// per constraint set, a sparse factorization of the size of the region.
-  EXACT_CONSTRAINTS,
-  /// The paper's formulation: the control vertices are met in the least
-  /// squares sense only. The detail transfer prescribes the fixed vertices
-  /// around the region of interest, which only change with the region, so it
-  /// is factored once per region and a new constraint set costs no sparse
-  /// factorization at all (only the `m × m` one); in a connected part of the
-  /// region without fixed vertices, the translation that best matches the
-  /// control vertices is fitted. Control vertices land near their targets
-  /// (the residuals are in `Spectral_deformation_report`); the region joins
-  /// the fixed vertices as with the exact policy.
-  SOFT_CONSTRAINTS
-};
-
-/// \ingroup PkgSpectralSurfaceMeshDeformationRef
-/// What the last `preprocess()` of a `Spectral_surface_mesh_deformation` did.
-///
-/// When `preprocess()` finds nothing to do (neither the region nor the
-/// constraint set changed since its last success), the report is kept, with
-/// `region_rebuilt` and `basis_computed` set to `false` and the times to 0.
-/// Times are wall-clock seconds.
-struct Spectral_preprocess_report
-{
-  bool success = false;                     ///< whether the deformation can run
-  std::string message;                      ///< why not, when `success` is `false`
-  bool region_rebuilt = false;              ///< the region (and its basis) had to be built
-  bool basis_computed = false;              ///< the eigensolver ran (not reused, handed in or loaded)
-  std::size_t number_of_region_vertices = 0;///< vertices of the region of interest and their fixed ring
-  std::size_t number_of_frequencies = 0;    ///< basis functions in use (spectral algorithms; 0 with `SPATIAL_DUAL_LAPLACIAN`)
-  std::size_t number_of_constrained_vertices = 0; ///< control vertices and fixed ring vertices
-  double region_seconds = 0;                ///< region extraction, validation, basis, per-region matrices and factorizations
-  double basis_seconds = 0;                 ///< of which the eigensolve
-  double factorization_seconds = 0;         ///< per constraint set: the reduced factorization, plus the sparse one of the exact policy or of `SPATIAL_DUAL_LAPLACIAN`
-};
-
-/// \ingroup PkgSpectralSurfaceMeshDeformationRef
-/// What the last `deform()` of a `Spectral_surface_mesh_deformation` did.
-///
-/// The residuals are measured on the positions written to the mesh: they are
-/// 0 up to round-off with `EXACT_CONSTRAINTS` and with
-/// `SPATIAL_DUAL_LAPLACIAN`. Times are wall-clock seconds.
-struct Spectral_deformation_report
-{
-  bool success = false;             ///< whether the mesh was updated
-  std::string message;              ///< why not, when `success` is `false`
-  unsigned int iterations = 0;      ///< solves of the (reduced or spatial) system
-  double last_step = 0;             ///< last relative step (see `set_tolerance()`)
-  bool converged = false;           ///< the last step fell below the tolerance
-  double max_control_residual = 0;  ///< largest distance of a control vertex to its target, relative to the bounding-box diagonal of the region
-  double rms_control_residual = 0;  ///< root mean square of the same distances, relative likewise
-  double solve_seconds = 0;         ///< rigid fits and iterations
-  double detail_transfer_seconds = 0; ///< deformation transfer (spectral algorithms; 0 with `SPATIAL_DUAL_LAPLACIAN`)
-  double total_seconds = 0;         ///< the whole `deform()` call, preprocessing excluded
-};
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationRef
 /// Deforms a triangle mesh with the spectral dual Laplacian editing of
@@ -243,25 +153,27 @@ private:
   typedef Spectral_deformation::internal::Triangle_arrays Triangle_arrays;
   typedef Spectral_deformation_error Error;
 
-  /// \cond SKIP_IN_MANUAL
-  // Everything that depends only on the ROI and the initial geometry.
-  struct Region
-  {
-    std::vector<vertex_descriptor> vertices; // local index -> vertex
-    std::vector<int> local;                  // vertex index -> local index, or -1
-    std::vector<char> is_fixed;              // local: in the region, outside the ROI
-    Triangle_arrays arrays;
-    double diagonal = 0;
-    std::vector<int> component; // local index -> connected component
-    int number_of_components = 0;
-    Spectral_deformation::internal::Basis_data basis;
-    Spectral_deformation::internal::Spectral_dual_laplacian_solver spectral;
-    Spectral_deformation::internal::Detail_transfer<Sparse_solver_traits> detail;
-    std::unique_ptr<Spectral_deformation::internal::Spatial_dual_laplacian_solver<Spatial_solver_traits>> spatial;
-  };
-  /// \endcond
+  typedef Spectral_deformation::internal::Pipeline_selector<TAG, Sparse_solver_traits, Spatial_solver_traits>
+      Selector;
+  typedef typename Selector::type Pipeline;
+  static constexpr bool is_spectral = Selector::is_spectral;
 
-  static constexpr bool is_spectral = (TAG != SPATIAL_DUAL_LAPLACIAN);
+public:
+  /// Whether the algorithm `TAG` works in a basis of manifold harmonics
+  /// (`SPECTRAL_DUAL_LAPLACIAN`, `SPECTRAL_LINEAR`). The options of the basis
+  /// and of the reduced system (`set_number_of_frequencies()`,
+  /// `set_constraint_weight()`, `set_constraint_policy()`, the basis cache,
+  /// ...) do not compile for an algorithm without basis.
+  static constexpr bool has_basis = is_spectral;
+
+private:
+
+  // Everything that depends only on the ROI and the initial geometry.
+  struct Region : Spectral_deformation::internal::Region<vertex_descriptor>
+  {
+    Pipeline pipeline;
+  };
+
 
 public:
   /// \name Construction
@@ -521,9 +433,13 @@ public:
       rotate(*begin, to_rotation_center, quat);
   }
 
-  /// The target position of the control vertex `vd` (`vd` must be a control
-  /// vertex, as in CGAL).
-  const Point& target_position(vertex_descriptor vd) { return m_target[checked_id(vd)]; }
+  /// The target position of the control vertex `vd`.
+  /// \pre `vd` is a control vertex (as in CGAL).
+  const Point& target_position(vertex_descriptor vd)
+  {
+    CGAL_precondition(is_control_vertex(vd));
+    return m_target[checked_id(vd)];
+  }
 
   /// @}
 
@@ -554,19 +470,15 @@ public:
     }
     try
     {
+      Region& region = *m_region;
+      const Positions targets = constrained_targets();
       Positions result;
-      Eigen::MatrixXd coefficients;
-      if(is_spectral)
-        deform_spectral(std::max(1u, iterations), tolerance, result, coefficients);
-      else
-        deform_spatial(std::max(1u, iterations), tolerance, result);
+      region.pipeline.deform(region, m_constraints, targets, std::max(1u, iterations), tolerance, result,
+                             m_deform_report);
+      report_residuals(result, targets);
       write_result(result);
       // The iteration state changes only with the mesh.
-      if(is_spectral)
-        m_coefficients.swap(coefficients);
-      else
-        m_spatial_solution = result;
-      m_has_solution = true;
+      region.pipeline.accept();
       m_deform_report.success = true;
     }
     catch(const Error& e)
@@ -588,7 +500,8 @@ public:
       if(is_control_vertex(vd))
         m_target[id(vd)] = m_original[id(vd)];
     }
-    m_has_solution = false;
+    if(m_region)
+      m_region->pipeline.restart();
   }
 
   /// Makes the current positions of the ROI vertices their initial
@@ -600,7 +513,6 @@ public:
     for(vertex_descriptor vd : m_roi)
       m_original[id(vd)] = get(m_vpm, vd);
     m_region.reset();
-    m_has_solution = false;
     m_constraints_valid = false;
   }
 
@@ -626,24 +538,25 @@ public:
   void set_tolerance(double tolerance) { m_tolerance = tolerance; }
 
   /// The number of frequencies `m` of the basis (default 100).
-  std::size_t number_of_frequencies() const { return m_frequencies; }
+  std::size_t number_of_frequencies() const { return m_settings.frequencies; }
   /// Sets the number of frequencies; a region with fewer vertices uses all of
   /// them. A different value makes the next `preprocess()` rebuild the
   /// region, basis included. Not used by `SPATIAL_DUAL_LAPLACIAN`.
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `m` is 0.
   void set_number_of_frequencies(std::size_t m)
   {
+    static_assert(is_spectral, "set_number_of_frequencies(): SPATIAL_DUAL_LAPLACIAN has no basis");
     if(m == 0)
       throw Error(Error::INVALID_ARGUMENT, "the number of frequencies must be positive");
-    if(m != m_frequencies)
+    if(m != m_settings.frequencies)
     {
-      m_frequencies = m;
+      m_settings.frequencies = m;
       m_region.reset();
       m_constraints_valid = false;
     }
   }
   /// The weight `w` of the constraints in the reduced least squares system (default 1).
-  double constraint_weight() const { return m_weight; }
+  double constraint_weight() const { return m_settings.weight; }
   /// Sets the constraint weight, a change of the constraint set. Larger
   /// weights meet the constraints of the smooth mesh more closely but the
   /// truncated basis cannot form sharp transitions, which degrades the
@@ -652,29 +565,35 @@ public:
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) unless `w` is positive and finite.
   void set_constraint_weight(double w)
   {
+    static_assert(is_spectral, "set_constraint_weight(): SPATIAL_DUAL_LAPLACIAN has no constraint weight");
     if(!(w > 0 && std::isfinite(w)))
       throw Error(Error::INVALID_ARGUMENT, "the constraint weight must be positive and finite");
-    m_weight = w;
+    m_settings.weight = w;
     m_constraints_valid = false;
   }
   /// The constraint policy (default `EXACT_CONSTRAINTS`).
-  Spectral_constraint_policy constraint_policy() const { return m_policy; }
+  Spectral_constraint_policy constraint_policy() const { return m_settings.policy; }
   /// Sets the constraint policy; a different policy is a change of the
   /// constraint set. Not used by `SPATIAL_DUAL_LAPLACIAN`.
   void set_constraint_policy(Spectral_constraint_policy policy)
   {
-    if(policy != m_policy)
+    static_assert(is_spectral, "set_constraint_policy(): SPATIAL_DUAL_LAPLACIAN always meets the constraints exactly");
+    if(policy != m_settings.policy)
     {
-      m_policy = policy;
+      m_settings.policy = policy;
       m_constraints_valid = false;
     }
   }
   /// Sets the eigensolver used when a basis is next computed; a basis already
   /// computed is kept.
-  void set_eigensolver_traits(const Eigensolver_traits& traits) { m_eigensolver = traits; }
+  void set_eigensolver_traits(const Eigensolver_traits& traits)
+  {
+    static_assert(is_spectral, "set_eigensolver_traits(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    m_eigensolver = traits;
+  }
   /// Whether `deform()` reads its copy of the basis in single precision
   /// (default `false`).
-  bool single_precision_basis() const { return m_single_precision_basis; }
+  bool single_precision_basis() const { return m_settings.single_precision_basis; }
   /// Stores the copy of the basis that every iteration of `deform()` reads
   /// in float (4 n m bytes instead of 8 n m); the arithmetic stays in double.
   /// Not the default: the reduced systems amplify the rounding of the copy,
@@ -684,9 +603,10 @@ public:
   /// once, the basis is kept. Not used by `SPATIAL_DUAL_LAPLACIAN`.
   void set_single_precision_basis(bool single)
   {
-    m_single_precision_basis = single;
+    static_assert(is_spectral, "set_single_precision_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    m_settings.single_precision_basis = single;
     if(m_region)
-      m_region->spectral.set_single_precision(single);
+      m_region->pipeline.set_single_precision(single);
   }
 
   /// @}
@@ -704,9 +624,10 @@ public:
   template <class EigensolverTraits>
   void set_basis(const Manifold_harmonics_basis<TM, EigensolverTraits>& basis)
   {
+    static_assert(is_spectral, "set_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
     m_supplied_basis = basis.data();
-    if(m_region && !m_region->basis.empty() &&
-       m_supplied_basis.fingerprint != m_region->basis.fingerprint)
+    if(m_region && !m_region->pipeline.basis().empty() &&
+       m_supplied_basis.fingerprint != m_region->pipeline.basis().fingerprint)
     {
       m_region.reset();
       m_constraints_valid = false;
@@ -719,9 +640,10 @@ public:
   ///         yet (call `preprocess()` first) or the stream fails.
   void save_basis(std::ostream& os) const
   {
-    if(!m_region || m_region->basis.empty())
+    static_assert(is_spectral, "save_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    if(!m_region || m_region->pipeline.basis().empty())
       throw Error(Error::IO_ERROR, "save_basis: no basis yet, call preprocess() first");
-    Spectral_deformation::internal::write_basis(os, m_region->basis);
+    Spectral_deformation::internal::write_basis(os, m_region->pipeline.basis());
   }
 
   /// Reads a basis written by `save_basis()` (or by
@@ -734,9 +656,9 @@ public:
   ///         region or geometry) or `INVALID_MESH`; nothing changes then.
   void load_basis(std::istream& is)
   {
+    static_assert(is_spectral, "load_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
     Spectral_deformation::internal::Basis_data data = Spectral_deformation::internal::read_basis(is);
-    std::unique_ptr<Region> region = build_region_connectivity();
-    Spectral_deformation::internal::check_basis_matches(data, region->arrays);
+    Spectral_deformation::internal::check_basis_matches(data, extract_region().arrays);
     m_supplied_basis = std::move(data);
     m_region.reset();
     m_constraints_valid = false;
@@ -759,9 +681,10 @@ public:
   Point smoothed_rest_point(vertex_descriptor vd) const
   {
     const int i = local_index(vd);
-    if(i < 0 || !is_spectral)
-      return m_original[id(vd)];
-    return to_point(m_region->spectral.smooth_rest().row(i));
+    if constexpr(is_spectral)
+      if(i >= 0)
+        return to_point(m_region->pipeline.smooth_rest(i));
+    return m_original[id(vd)];
   }
 
   /// The smooth deformed position of `vd` after the last successful
@@ -772,11 +695,10 @@ public:
   Point smoothed_deformed_point(vertex_descriptor vd) const
   {
     const int i = local_index(vd);
-    if(i < 0 || !is_spectral)
-      return m_original[id(vd)];
-    if(!m_has_solution)
-      return smoothed_rest_point(vd);
-    return to_point((m_region->basis.basis.row(i) * m_coefficients).eval());
+    if constexpr(is_spectral)
+      if(i >= 0)
+        return to_point(m_region->pipeline.smooth_deformed(i));
+    return m_original[id(vd)];
   }
 
   /// @}
@@ -866,109 +788,26 @@ private:
       m_previous_region_vertices = m_region->vertices;
     m_region.reset();
     m_constraints_valid = false;
-    m_has_solution = false;
   }
 
   // The faces incident to ROI vertices, with local vertex indices in the
   // order of the vertex index map; validated.
-  std::unique_ptr<Region> build_region_connectivity() const
+  Spectral_deformation::internal::Region<vertex_descriptor> extract_region() const
   {
-    std::unique_ptr<Region> region(new Region());
-    const std::size_t n = m_is_roi.size();
-    std::vector<char> in_region(n, 0);
-    std::vector<std::array<std::size_t, 3>> faces_of_region;
-    for(auto f : faces(m_tm))
-    {
-      std::array<std::size_t, 3> t;
-      int k = 0;
-      bool touches_roi = false;
-      for(auto h : halfedges_around_face(halfedge(f, m_tm), m_tm))
-      {
-        if(k == 3)
-          throw Error(Error::INVALID_MESH, "the mesh is not triangulated");
-        t[k] = id(target(h, m_tm));
-        touches_roi = touches_roi || m_is_roi[t[k]];
-        ++k;
-      }
-      if(k != 3)
-        throw Error(Error::INVALID_MESH, "the mesh has a face with fewer than three vertices");
-      if(!touches_roi)
-        continue;
-      faces_of_region.push_back(t);
-      for(std::size_t i : t)
-        in_region[i] = 1;
-    }
-    if(faces_of_region.empty())
-      throw Error(Error::INVALID_MESH, "no face is incident to the region of interest");
-
-    std::vector<vertex_descriptor> by_index(n);
-    for(vertex_descriptor vd : vertices(m_tm))
-      by_index[id(vd)] = vd;
-    region->local.assign(n, -1);
-    for(std::size_t i = 0; i < n; ++i)
-      if(in_region[i])
-      {
-        region->local[i] = static_cast<int>(region->vertices.size());
-        region->vertices.push_back(by_index[i]);
-        region->is_fixed.push_back(m_is_roi[i] ? 0 : 1);
-      }
-    const Eigen::Index region_size = static_cast<Eigen::Index>(region->vertices.size());
-    region->arrays.positions.resize(region_size, 3);
-    for(Eigen::Index r = 0; r < region_size; ++r)
-    {
-      const Point& p = m_original[id(region->vertices[static_cast<std::size_t>(r)])];
-      region->arrays.positions.row(r) << CGAL::to_double(p[0]), CGAL::to_double(p[1]),
-          CGAL::to_double(p[2]);
-    }
-    region->arrays.triangles.resize(static_cast<Eigen::Index>(faces_of_region.size()), 3);
-    for(std::size_t f = 0; f < faces_of_region.size(); ++f)
-      for(int k = 0; k < 3; ++k)
-        region->arrays.triangles(static_cast<Eigen::Index>(f), k) = region->local[faces_of_region[f][k]];
-    Spectral_deformation::internal::validate_triangle_arrays(region->arrays);
-    region->component = Spectral_deformation::internal::connected_components(
-        region->arrays.triangles, region->arrays.number_of_vertices(), region->number_of_components);
-    region->diagonal = (region->arrays.positions.colwise().maxCoeff() -
-                        region->arrays.positions.colwise().minCoeff())
-                           .norm();
-    return region;
+    return Spectral_deformation::internal::extract_region(
+        m_tm, [this](vertex_descriptor vd) { return id(vd); }, m_is_roi, m_original);
   }
 
   void build_region()
   {
     const auto start = std::chrono::steady_clock::now();
-    std::unique_ptr<Region> region = build_region_connectivity();
-    if(is_spectral)
-    {
-      const std::uint64_t fingerprint = Spectral_deformation::internal::fingerprint(region->arrays);
-      if(!m_supplied_basis.empty() && m_supplied_basis.fingerprint == fingerprint &&
-         m_supplied_basis.basis.rows() == region->arrays.number_of_vertices())
-        region->basis = m_supplied_basis;
-      else
-      {
-        const auto basis_start = std::chrono::steady_clock::now();
-        const Eigen::Index m = std::min<Eigen::Index>(static_cast<Eigen::Index>(m_frequencies),
-                                                      region->arrays.number_of_vertices());
-        Eigensolver_traits eigensolver = m_eigensolver;
-        Spectral_deformation::internal::compute_manifold_harmonics(
-            region->arrays, m, eigensolver, region->basis.eigenvalues, region->basis.basis,
-            region->basis.mass);
-        region->basis.number_of_faces = static_cast<std::uint64_t>(region->arrays.number_of_faces());
-        region->basis.fingerprint = fingerprint;
-        m_preprocess_report.basis_computed = true;
-        m_preprocess_report.basis_seconds = seconds_since(basis_start);
-      }
-      region->spectral.set_single_precision(m_single_precision_basis);
-      region->spectral.initialize(region->basis.basis, region->basis.mass, region->arrays);
-      region->detail.initialize(region->arrays, region->spectral.smooth_rest());
-    }
+    std::unique_ptr<Region> region(new Region());
+    static_cast<Spectral_deformation::internal::Region<vertex_descriptor>&>(*region) = extract_region();
+    if constexpr(is_spectral)
+      region->pipeline.build(*region, m_supplied_basis, m_settings, m_eigensolver, m_preprocess_report);
     else
-    {
-      region->spatial.reset(
-          new Spectral_deformation::internal::Spatial_dual_laplacian_solver<Spatial_solver_traits>(
-              region->arrays));
-    }
+      region->pipeline.build(*region);
     m_region = std::move(region);
-    m_has_solution = false;
     m_preprocess_report.region_rebuilt = true;
     m_preprocess_report.region_seconds = seconds_since(start);
   }
@@ -991,101 +830,20 @@ private:
     }
     Region& region = *m_region;
     m_preprocess_report.number_of_region_vertices = region.vertices.size();
-    m_preprocess_report.number_of_frequencies = static_cast<std::size_t>(region.basis.basis.cols());
+    if constexpr(is_spectral)
+      m_preprocess_report.number_of_frequencies = region.pipeline.number_of_frequencies();
 
-    // Constrained vertices: the fixed ring first, then the control vertices.
-    m_constrained.clear();
-    for(std::size_t i = 0; i < region.vertices.size(); ++i)
-      if(region.is_fixed[i])
-        m_constrained.push_back(static_cast<int>(i));
-    const std::size_t fixed_count = m_constrained.size();
-    for(std::size_t i = 0; i < region.vertices.size(); ++i)
-      if(!region.is_fixed[i] && is_control_vertex(region.vertices[i]))
-        m_constrained.push_back(static_cast<int>(i));
-    if(m_constrained.empty())
-      throw Error(Error::INVALID_ARGUMENT,
-                  "no constraint: the region of interest is the whole mesh and has no control vertex");
-    m_preprocess_report.number_of_constrained_vertices = m_constrained.size();
-
-    std::vector<char> has_constraint(static_cast<std::size_t>(region.number_of_components), 0);
-    for(int i : m_constrained)
-      has_constraint[static_cast<std::size_t>(region.component[static_cast<std::size_t>(i)])] = 1;
-    for(char c : has_constraint)
-      if(!c)
-        throw Error(Error::INVALID_ARGUMENT,
-                    "a connected part of the region of interest has neither a control vertex "
-                    "nor a fixed neighbour: its position would be undetermined");
-
-    build_groups(fixed_count);
+    m_constraints = Spectral_deformation::internal::make_constraint_set(
+        region, [this, &region](std::size_t i) { return is_control_vertex(region.vertices[i]); });
+    m_preprocess_report.number_of_constrained_vertices = m_constraints.size();
 
     const auto start = std::chrono::steady_clock::now();
-    if(is_spectral)
-    {
-      if(!region.spectral.preprocess(m_constrained, m_weight))
-        throw Error(Error::SOLVER_FAILURE, "the reduced system is not positive definite");
-      if(m_policy == EXACT_CONSTRAINTS)
-      {
-        std::vector<char> prescribed(region.vertices.size(), 0);
-        for(int i : m_constrained)
-          prescribed[static_cast<std::size_t>(i)] = 1;
-        if(!region.detail.prepare_dirichlet(prescribed))
-          throw Error(Error::SOLVER_FAILURE, "the factorization of the detail transfer failed");
-      }
-      else if(!region.detail.prepare_soft(region.is_fixed))
-        throw Error(Error::SOLVER_FAILURE, "the factorization of the detail transfer failed");
-    }
-    else if(!region.spatial->preprocess(m_constrained, 0.0))
-      throw Error(Error::SOLVER_FAILURE, region.spatial->error_message());
+    if constexpr(is_spectral)
+      region.pipeline.prepare(region, m_constraints, m_settings);
+    else
+      region.pipeline.prepare(region, m_constraints);
     m_preprocess_report.factorization_seconds = seconds_since(start);
     m_constraints_valid = true;
-  }
-
-  // Groups of constrained vertices fitted by one rigid motion each: the fixed
-  // ring, and every connected set of control vertices (positions in
-  // m_constrained).
-  void build_groups(std::size_t fixed_count)
-  {
-    m_groups.clear();
-    if(fixed_count > 0)
-    {
-      m_groups.emplace_back();
-      for(std::size_t k = 0; k < fixed_count; ++k)
-        m_groups.back().push_back(static_cast<int>(k));
-    }
-    const Region& region = *m_region;
-    std::vector<int> position(region.vertices.size(), -1);
-    for(std::size_t k = fixed_count; k < m_constrained.size(); ++k)
-      position[static_cast<std::size_t>(m_constrained[k])] = static_cast<int>(k);
-    // Union-find over edges joining two control vertices.
-    std::vector<int> parent(m_constrained.size());
-    for(std::size_t k = 0; k < parent.size(); ++k)
-      parent[k] = static_cast<int>(k);
-    auto find = [&parent](int k) {
-      while(parent[static_cast<std::size_t>(k)] != k)
-        k = parent[static_cast<std::size_t>(k)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(k)])];
-      return k;
-    };
-    const auto& T = region.arrays.triangles;
-    for(Eigen::Index f = 0; f < T.rows(); ++f)
-      for(int e = 0; e < 3; ++e)
-      {
-        const int a = position[static_cast<std::size_t>(T(f, e))];
-        const int b = position[static_cast<std::size_t>(T(f, (e + 1) % 3))];
-        if(a >= 0 && b >= 0)
-          parent[static_cast<std::size_t>(find(a))] = find(b);
-      }
-    std::vector<int> group_of_root(m_constrained.size(), -1);
-    for(std::size_t k = fixed_count; k < m_constrained.size(); ++k)
-    {
-      const int root = find(static_cast<int>(k));
-      if(group_of_root[static_cast<std::size_t>(root)] < 0)
-      {
-        group_of_root[static_cast<std::size_t>(root)] = static_cast<int>(m_groups.size());
-        m_groups.emplace_back();
-      }
-      m_groups[static_cast<std::size_t>(group_of_root[static_cast<std::size_t>(root)])].push_back(
-          static_cast<int>(k));
-    }
   }
 
   // Targets of the constrained vertices (k×3): initial positions for the
@@ -1093,12 +851,13 @@ private:
   Positions constrained_targets() const
   {
     const Region& region = *m_region;
-    Positions targets(static_cast<Eigen::Index>(m_constrained.size()), 3);
-    for(std::size_t k = 0; k < m_constrained.size(); ++k)
+    const std::vector<int>& constrained = m_constraints.constrained;
+    Positions targets(static_cast<Eigen::Index>(constrained.size()), 3);
+    for(std::size_t k = 0; k < constrained.size(); ++k)
     {
-      const vertex_descriptor vd = region.vertices[static_cast<std::size_t>(m_constrained[k])];
-      const Point& p = region.is_fixed[static_cast<std::size_t>(m_constrained[k])] ? m_original[id(vd)]
-                                                                                  : m_target[id(vd)];
+      const std::size_t i = static_cast<std::size_t>(constrained[k]);
+      const vertex_descriptor vd = region.vertices[i];
+      const Point& p = region.is_fixed[i] ? m_original[id(vd)] : m_target[id(vd)];
       targets.row(static_cast<Eigen::Index>(k)) << CGAL::to_double(p[0]), CGAL::to_double(p[1]),
           CGAL::to_double(p[2]);
     }
@@ -1107,121 +866,13 @@ private:
     return targets;
   }
 
-  void deform_spectral(unsigned int iterations, double tolerance, Positions& result,
-                       Eigen::MatrixXd& coefficients)
-  {
-    Region& region = *m_region;
-    const Positions targets = constrained_targets();
-    const auto start = std::chrono::steady_clock::now();
-
-    // Smooth targets: the rigid motion of each group carries the smooth rest
-    // positions, plus the non-rigid part of the detailed targets.
-    const Positions& rest = region.arrays.positions;
-    const Positions& smooth = region.spectral.smooth_rest();
-    Positions smooth_targets(targets.rows(), 3);
-    for(const std::vector<int>& group : m_groups)
-    {
-      Positions from(static_cast<Eigen::Index>(group.size()), 3), to(from.rows(), 3);
-      for(std::size_t g = 0; g < group.size(); ++g)
-      {
-        from.row(static_cast<Eigen::Index>(g)) = rest.row(m_constrained[static_cast<std::size_t>(group[g])]);
-        to.row(static_cast<Eigen::Index>(g)) = targets.row(group[g]);
-      }
-      const Spectral_deformation::internal::Rigid_motion motion =
-          Spectral_deformation::internal::fit_rigid_motion(from, to);
-      for(std::size_t g = 0; g < group.size(); ++g)
-      {
-        const int i = m_constrained[static_cast<std::size_t>(group[g])];
-        const Eigen::RowVector3d residual =
-            to.row(static_cast<Eigen::Index>(g)) - motion.apply(rest.row(i));
-        smooth_targets.row(group[g]) = motion.apply(smooth.row(i)) + residual;
-      }
-    }
-
-    const bool linear = (TAG == SPECTRAL_LINEAR);
-    coefficients = (m_has_solution && !linear) ? m_coefficients : region.spectral.rest_coefficients();
-    const Spectral_deformation::internal::Iteration_report report = region.spectral.solve(
-        smooth_targets, coefficients, linear ? 0 : static_cast<int>(iterations) - 1, tolerance);
-    if(!report.success)
-      throw Error(Error::SOLVER_FAILURE, report.message);
-    m_deform_report.iterations = static_cast<unsigned int>(report.iterations + 1);
-    m_deform_report.last_step = report.last_step;
-    m_deform_report.converged = report.converged;
-    m_deform_report.solve_seconds = seconds_since(start);
-
-    const auto transfer_start = std::chrono::steady_clock::now();
-    const Positions smooth_deformed = region.spectral.shape(coefficients);
-    bool transferred = false;
-    if(m_policy == EXACT_CONSTRAINTS)
-    {
-      Positions prescribed(rest.rows(), 3);
-      for(std::size_t k = 0; k < m_constrained.size(); ++k)
-        prescribed.row(m_constrained[k]) = targets.row(static_cast<Eigen::Index>(k));
-      transferred = region.detail.transfer_exact(smooth_deformed, prescribed, result);
-    }
-    else
-    {
-      // The fixed vertices around the ROI are anchored: only the control
-      // vertices are soft.
-      Positions anchored(rest.rows(), 3);
-      for(std::size_t i = 0; i < region.is_fixed.size(); ++i)
-        if(region.is_fixed[i])
-          anchored.row(static_cast<Eigen::Index>(i)) = rest.row(static_cast<Eigen::Index>(i));
-      transferred = region.detail.transfer_soft(smooth_deformed, anchored, m_constrained, targets, result);
-      if(transferred)
-        meet_soft_constraints(targets, result);
-    }
-    if(!transferred)
-      throw Error(Error::SOLVER_FAILURE, "the detail transfer failed (a face of the smooth "
-                                         "deformed mesh is degenerate)");
-    m_deform_report.detail_transfer_seconds = seconds_since(transfer_start);
-    report_residuals(result, targets);
-  }
-
-  // Soft policy: the detail transfer carries the rotations of the smooth
-  // mesh, not its stretch, so the control vertices end farther from their
-  // targets than the smooth mesh did. The residuals are met as the reduced
-  // system meets its targets, by a smooth field of the basis added to the
-  // region (not to the fixed vertices, which stay where they are).
-  void meet_soft_constraints(const Positions& targets, Positions& result) const
-  {
-    const Region& region = *m_region;
-    Positions residuals(targets.rows(), 3);
-    for(std::size_t k = 0; k < m_constrained.size(); ++k)
-      residuals.row(static_cast<Eigen::Index>(k)) =
-          targets.row(static_cast<Eigen::Index>(k)) - result.row(m_constrained[k]);
-    const Positions correction = region.spectral.shape(region.spectral.fit_constraints(residuals));
-    if(!correction.allFinite())
-      throw Error(Error::SOLVER_FAILURE, "the iteration produced non-finite values");
-    for(std::size_t i = 0; i < region.is_fixed.size(); ++i)
-      if(!region.is_fixed[i])
-        result.row(static_cast<Eigen::Index>(i)) += correction.row(static_cast<Eigen::Index>(i));
-  }
-
-  void deform_spatial(unsigned int iterations, double tolerance, Positions& result)
-  {
-    Region& region = *m_region;
-    const Positions targets = constrained_targets();
-    const auto start = std::chrono::steady_clock::now();
-    const Positions& from = m_has_solution ? m_spatial_solution : region.arrays.positions;
-    const Spectral_deformation::internal::Iteration_report report =
-        region.spatial->solve(targets, from, result, static_cast<int>(iterations) - 1, tolerance);
-    if(!report.success)
-      throw Error(Error::SOLVER_FAILURE, report.message);
-    m_deform_report.iterations = static_cast<unsigned int>(report.iterations + 1);
-    m_deform_report.last_step = report.last_step;
-    m_deform_report.converged = report.converged;
-    m_deform_report.solve_seconds = seconds_since(start);
-    report_residuals(result, targets);
-  }
-
   void report_residuals(const Positions& result, const Positions& targets)
   {
     double max_residual = 0, sum = 0;
     std::size_t count = 0;
-    for(std::size_t k = 0; k < m_constrained.size(); ++k)
+    for(std::size_t k = 0; k < m_constraints.size(); ++k)
     {
-      const int i = m_constrained[k];
+      const int i = m_constraints.constrained[k];
       if(m_region->is_fixed[static_cast<std::size_t>(i)])
         continue;
       const double d = (result.row(i) - targets.row(static_cast<Eigen::Index>(k))).norm();
@@ -1260,20 +911,13 @@ private:
 
   unsigned int m_iterations = 10;
   double m_tolerance = 1e-4;
-  std::size_t m_frequencies = 100;
-  bool m_single_precision_basis = false;
-  double m_weight = 1.0;
-  Spectral_constraint_policy m_policy = EXACT_CONSTRAINTS;
+  Spectral_deformation::internal::Spectral_settings m_settings;
   Eigensolver_traits m_eigensolver;
   Spectral_deformation::internal::Basis_data m_supplied_basis;
 
   std::unique_ptr<Region> m_region;
   bool m_constraints_valid = false;
-  std::vector<int> m_constrained;
-  std::vector<std::vector<int>> m_groups;
-  bool m_has_solution = false;
-  Eigen::MatrixXd m_coefficients;
-  Positions m_spatial_solution;
+  Spectral_deformation::internal::Constraint_set m_constraints;
 
   Spectral_preprocess_report m_preprocess_report;
   Spectral_deformation_report m_deform_report;

@@ -7,41 +7,30 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_ITERATION_REPORT_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_ITERATION_REPORT_H
 
-#include <string>
+#include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
 
 /// What an iterative solve did: rotation updates performed after the linear
-/// solve, the last relative RMS step, and whether it converged or failed.
+/// solve, the last relative step, and whether it converged. A solve that
+/// fails throws `Spectral_deformation_error` instead.
 struct Iteration_report
 {
   int iterations = 0;
   double last_step = 0;
   bool converged = false;
-  bool success = true;
-  std::string message;
-
-  Iteration_report& failed(const std::string& why)
-  {
-    success = false;
-    message = why;
-    return *this;
-  }
 
   /// Records the relative step of solve number `iteration` (from 0) and tells
-  /// whether to stop: converged (step below `tolerance`), or diverging (a
-  /// step above half the scale after the third solve; `success` is then false).
+  /// whether to stop (step below `tolerance`). Throws when the iteration
+  /// diverges: a step above half the scale after the third solve.
   bool stop_after(int iteration, double step, double tolerance)
   {
     iterations = iteration;
     last_step = step;
     if(iteration > 2 && step > 0.5)
-    {
-      failed("the iteration diverges");
-      return true;
-    }
+      throw Spectral_deformation_error(Spectral_deformation_error::SOLVER_FAILURE, "the iteration diverges");
     converged = (step < tolerance);
     return converged;
   }

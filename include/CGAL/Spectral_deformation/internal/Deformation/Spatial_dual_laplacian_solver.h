@@ -30,9 +30,9 @@ namespace internal {
 /// iterations that turn every dual coordinate to the current dual normal
 /// while keeping its signed rest length.
 ///
-/// Constraints are hard (the constrained vertices are eliminated and land
-/// exactly on their targets) when the weight is not positive and finite,
-/// soft with weight w otherwise.
+/// Constraints are exact (`preprocess_exact()`: the constrained vertices are
+/// eliminated and land on their targets) or soft (`preprocess_soft()`: met
+/// in the least-squares sense with a weight w).
 template <class SparseSPDSolverTraits = Default_sparse_spd_solver_traits>
 class Spatial_dual_laplacian_solver
 {
@@ -56,52 +56,37 @@ public:
   const Dual_coordinates& rest_coordinates() const { return m_rest_coordinates; }
   double bounding_box_diagonal() const { return m_diagonal; }
 
-  /// Sets the constrained vertices and factors the system. Returns false,
-  /// with `error_message()` set, when a connected component has no
+  /// Sets the constrained vertices, which then land exactly on their
+  /// targets (they are eliminated), and factors the system.
+  /// Throws `Spectral_deformation_error` when a connected component has no
   /// constrained vertex, an index is out of range, or the factorization fails.
-  bool preprocess(const std::vector<int>& constrained, double weight)
+  void preprocess_exact(const std::vector<int>& constrained)
   {
-    m_error_message.clear();
-    m_factored = false;
-    const Eigen::Index n = m_rest.rows();
-    if(constrained.empty())
-      return fail("no constrained vertex");
-    m_is_constrained.assign(static_cast<std::size_t>(n), 0);
-    for(int i : constrained)
-    {
-      if(i < 0 || i >= n)
-        return fail("constrained vertex index " + std::to_string(i) + " out of range");
-      m_is_constrained[static_cast<std::size_t>(i)] = 1;
-    }
-    std::vector<char> component_constrained(static_cast<std::size_t>(m_number_of_components), 0);
-    for(int i : constrained)
-      component_constrained[static_cast<std::size_t>(m_component[static_cast<std::size_t>(i)])] = 1;
-    for(int c = 0; c < m_number_of_components; ++c)
-      if(!component_constrained[static_cast<std::size_t>(c)])
-        return fail("connected component " + std::to_string(c) +
-                    " has no constrained vertex: its position would be undetermined");
-    m_constrained = constrained;
-    m_hard = !(weight > 0 && std::isfinite(weight));
-    m_weight = m_hard ? 0.0 : weight;
-
-    const Eigen::SparseMatrix<double> normal = m_LF_transpose * m_LF;
-    if(m_hard)
-    {
-      if(!m_hard_system.factor(normal, m_is_constrained))
-        return fail("the dual Laplacian system is singular: every connected part of the "
-                    "mesh needs a constrained vertex");
-    }
-    else
-    {
-      Eigen::SparseMatrix<double> A = normal;
-      for(int i : constrained)
-        A.coeffRef(i, i) += m_weight * m_weight;
-      if(!m_solver.factor(A))
-        return fail("the dual Laplacian system is singular: every connected part of the "
-                    "mesh needs a constrained vertex");
-    }
+    set_constrained(constrained);
+    m_hard = true;
+    m_weight = 0.0;
+    if(!m_hard_system.factor(m_LF_transpose * m_LF, m_is_constrained))
+      throw Error(Error::SOLVER_FAILURE, singular_system);
     m_factored = true;
-    return true;
+  }
+
+  /// Sets the constrained vertices, met in the least-squares sense with the
+  /// positive `weight` (the paper's soft constraints), and factors the
+  /// system. Throws as `preprocess_exact()`, and when `weight` is not
+  /// positive and finite.
+  void preprocess_soft(const std::vector<int>& constrained, double weight)
+  {
+    if(!(weight > 0 && std::isfinite(weight)))
+      throw Error(Error::INVALID_ARGUMENT, "the constraint weight must be positive and finite");
+    set_constrained(constrained);
+    m_hard = false;
+    m_weight = weight;
+    Eigen::SparseMatrix<double> A = m_LF_transpose * m_LF;
+    for(int i : constrained)
+      A.coeffRef(i, i) += m_weight * m_weight;
+    if(!m_solver.factor(A))
+      throw Error(Error::SOLVER_FAILURE, singular_system);
+    m_factored = true;
   }
 
   /// Deforms from `start` (n×3) towards the targets of the constrained
@@ -112,15 +97,16 @@ public:
   /// continues that iteration. Stops when the RMS step
   /// falls below `tolerance` times the bounding-box diagonal. On failure
   /// (non-finite values, an RMS step above half the diagonal after the third
-  /// iteration) `result` is left untouched and the report says why.
+  /// iteration) `result` is left untouched and `Spectral_deformation_error`
+  /// is thrown.
   Iteration_report solve(const Positions& targets, const Positions& start, Positions& result,
                          int max_iterations, double tolerance) const
   {
     Iteration_report report;
     if(!m_factored)
-      return report.failed("the solver is not preprocessed");
+      throw Error(Error::SOLVER_FAILURE, "the solver is not preprocessed");
     if(targets.rows() != static_cast<Eigen::Index>(m_constrained.size()) || !targets.allFinite())
-      return report.failed("the targets must be finite, one per constrained vertex");
+      throw Error(Error::INVALID_ARGUMENT, "the targets must be finite, one per constrained vertex");
 
     Positions current = start;
     Positions previous_normals = m_rest_coordinates.normals;
@@ -134,25 +120,46 @@ public:
       previous_normals = now.normals;
       Positions next;
       if(!solve_once(coordinates, targets, next))
-        return report.failed("a back-substitution failed");
+        throw Error(Error::SOLVER_FAILURE, "a back-substitution failed");
       if(!next.allFinite())
-        return report.failed("the iteration produced non-finite positions");
+        throw Error(Error::SOLVER_FAILURE, "the iteration produced non-finite positions");
       const double step = (next - current).norm() / scale;
       current.swap(next);
       if(report.stop_after(iteration, step, tolerance))
-      {
-        if(!report.success)
-          return report;
         break;
-      }
     }
     result.swap(current);
     return report;
   }
 
-  const std::string& error_message() const { return m_error_message; }
-
 private:
+  typedef Spectral_deformation_error Error;
+  static constexpr const char* singular_system =
+      "the dual Laplacian system is singular: every connected part of the mesh needs a constrained vertex";
+
+  void set_constrained(const std::vector<int>& constrained)
+  {
+    m_factored = false;
+    const Eigen::Index n = m_rest.rows();
+    if(constrained.empty())
+      throw Error(Error::INVALID_ARGUMENT, "no constrained vertex");
+    m_is_constrained.assign(static_cast<std::size_t>(n), 0);
+    for(int i : constrained)
+    {
+      if(i < 0 || i >= n)
+        throw Error(Error::INVALID_ARGUMENT, "constrained vertex index " + std::to_string(i) + " out of range");
+      m_is_constrained[static_cast<std::size_t>(i)] = 1;
+    }
+    std::vector<char> component_constrained(static_cast<std::size_t>(m_number_of_components), 0);
+    for(int i : constrained)
+      component_constrained[static_cast<std::size_t>(m_component[static_cast<std::size_t>(i)])] = 1;
+    for(int c = 0; c < m_number_of_components; ++c)
+      if(!component_constrained[static_cast<std::size_t>(c)])
+        throw Error(Error::INVALID_ARGUMENT, "connected component " + std::to_string(c) +
+                                                 " has no constrained vertex: its position would be undetermined");
+    m_constrained = constrained;
+  }
+
   bool solve_once(const Positions& coordinates, const Positions& targets, Positions& out) const
   {
     const Eigen::Index n = m_rest.rows();
@@ -179,12 +186,6 @@ private:
     return true;
   }
 
-  bool fail(const std::string& message)
-  {
-    m_error_message = message;
-    return false;
-  }
-
   Positions m_rest;
   Dual_mesh_operator m_dual;
   Dual_coordinates m_rest_coordinates;
@@ -201,7 +202,6 @@ private:
   double m_weight = 0;
   bool m_factored = false;
   SparseSPDSolverTraits m_solver;
-  std::string m_error_message;
 };
 
 } // namespace internal

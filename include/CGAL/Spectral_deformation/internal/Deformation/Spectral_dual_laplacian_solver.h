@@ -120,13 +120,15 @@ public:
   /// 1 + max_iterations solves, each with the rest coordinates turned to the
   /// dual normals of the current smooth shape. Stops when the M-norm of the
   /// step, relative to √area × bounding-box diagonal, is below `tolerance`.
-  /// On failure `coefficients` is left untouched.
+  /// On failure `coefficients` is left untouched and
+  /// `Spectral_deformation_error` is thrown.
   Iteration_report solve(const Positions& smooth_targets, Eigen::MatrixXd& coefficients,
                          int max_iterations, double tolerance) const
   {
+    typedef Spectral_deformation_error Error;
     Iteration_report report;
     if(!m_factored)
-      return report.failed("the spectral solver is not preprocessed");
+      throw Error(Error::SOLVER_FAILURE, "the spectral solver is not preprocessed");
     const Eigen::MatrixXd constraint_rhs =
         m_weight * m_weight * (m_constrained_rows.transpose() * smooth_targets);
     Eigen::MatrixXd current = coefficients;
@@ -144,15 +146,11 @@ public:
       w.rhs += constraint_rhs + m_regularization * current;
       const Eigen::MatrixXd next = m_cholesky.solve(w.rhs);
       if(!next.allFinite())
-        return report.failed("the iteration produced non-finite values");
+        throw Error(Error::SOLVER_FAILURE, "the iteration produced non-finite values");
       const double step = (next - current).norm() / m_scale;
       current = next;
       if(report.stop_after(iteration, step, tolerance))
-      {
-        if(!report.success)
-          return report;
         break;
-      }
       if(iteration < max_iterations)
         multiply(current, w.shape);
     }

@@ -1,0 +1,77 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPATIAL_PIPELINE_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPATIAL_PIPELINE_H
+
+#include <CGAL/Spectral_deformation/Deformation_reports.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Spatial_dual_laplacian_solver.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
+
+#include <CGAL/assertions.h>
+
+#include <chrono>
+#include <memory>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// The steps of `SPATIAL_DUAL_LAPLACIAN` for one region: the dual Laplacian
+/// system of the detailed region, factored per constraint set with the
+/// constrained vertices eliminated, iterated per target change. There is no
+/// basis and no detail transfer. Every step throws
+/// `Spectral_deformation_error` when it fails.
+template <class SparseSPDSolverTraits>
+class Spatial_pipeline
+{
+public:
+  void build(const Region_geometry& region)
+  {
+    m_solver.reset(new Spatial_dual_laplacian_solver<SparseSPDSolverTraits>(region.arrays));
+    m_has_solution = false;
+  }
+
+  void prepare(const Region_geometry&, const Constraint_set& set) { m_solver->preprocess_exact(set.constrained); }
+
+  /// The positions of the region for the `targets` of the constrained
+  /// vertices, continuing from the last accepted result.
+  void deform(const Region_geometry& region, const Constraint_set&, const Positions& targets,
+              unsigned int iterations, double tolerance, Positions& result, Spectral_deformation_report& report)
+  {
+    CGAL_precondition(m_solver != nullptr);
+    const auto start = std::chrono::steady_clock::now();
+    const Positions& from = m_has_solution ? m_solution : region.arrays.positions;
+    const Iteration_report iteration =
+        m_solver->solve(targets, from, result, static_cast<int>(iterations) - 1, tolerance);
+    report.iterations = static_cast<unsigned int>(iteration.iterations + 1);
+    report.last_step = iteration.last_step;
+    report.converged = iteration.converged;
+    report.solve_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m_pending = result;
+  }
+
+  void accept()
+  {
+    m_solution.swap(m_pending);
+    m_has_solution = true;
+  }
+
+  void restart() { m_has_solution = false; }
+
+private:
+  std::unique_ptr<Spatial_dual_laplacian_solver<SparseSPDSolverTraits>> m_solver;
+  Positions m_solution, m_pending;
+  bool m_has_solution = false;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPATIAL_PIPELINE_H

@@ -1,0 +1,217 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPECTRAL_PIPELINE_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPECTRAL_PIPELINE_H
+
+#include <CGAL/Manifold_harmonics_basis.h>
+#include <CGAL/Spectral_deformation/Deformation_options.h>
+#include <CGAL/Spectral_deformation/Deformation_reports.h>
+#include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
+
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+inline double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The settings of a spectral deformation that its pipeline reads.
+struct Spectral_settings
+{
+  std::size_t frequencies = 100;
+  double weight = 1.0;
+  Spectral_constraint_policy policy = EXACT_CONSTRAINTS;
+  bool single_precision_basis = false;
+};
+
+/// The steps of the spectral algorithms for one region: the basis, the
+/// reduced dual Laplacian solve of the smooth mesh (iterated, or once with
+/// the rest coordinates when `Iterated` is false) and the detail transfer
+/// under the chosen constraint policy. Every step throws
+/// `Spectral_deformation_error` when it fails.
+template <class SparseSPDSolverTraits, bool Iterated>
+class Spectral_pipeline
+{
+public:
+  /// Per region: uses `supplied` when it was computed on this region, else
+  /// computes the basis with `eigensolver`; then the reduced matrices and
+  /// the detail transfer.
+  template <class EigensolverTraits>
+  void build(const Region_geometry& region, const Basis_data& supplied, const Spectral_settings& settings,
+             const EigensolverTraits& eigensolver, Spectral_preprocess_report& report)
+  {
+    const std::uint64_t region_fingerprint = fingerprint(region.arrays);
+    if(!supplied.empty() && supplied.fingerprint == region_fingerprint &&
+       supplied.basis.rows() == region.arrays.number_of_vertices())
+      m_basis = supplied;
+    else
+    {
+      const auto start = std::chrono::steady_clock::now();
+      const Eigen::Index m = std::min<Eigen::Index>(static_cast<Eigen::Index>(settings.frequencies),
+                                                    region.arrays.number_of_vertices());
+      EigensolverTraits solver = eigensolver;
+      compute_manifold_harmonics(region.arrays, m, solver, m_basis.eigenvalues, m_basis.basis, m_basis.mass);
+      m_basis.number_of_faces = static_cast<std::uint64_t>(region.arrays.number_of_faces());
+      m_basis.fingerprint = region_fingerprint;
+      report.basis_computed = true;
+      report.basis_seconds = seconds_since(start);
+    }
+    m_solver.set_single_precision(settings.single_precision_basis);
+    m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays);
+    m_detail.initialize(region.arrays, m_solver.smooth_rest());
+    m_has_solution = false;
+  }
+
+  /// Per constraint set: the reduced factorization, and the detail transfer
+  /// system of the policy.
+  void prepare(const Region_geometry& region, const Constraint_set& set, const Spectral_settings& settings)
+  {
+    typedef Spectral_deformation_error Error;
+    if(!m_solver.preprocess(set.constrained, settings.weight))
+      throw Error(Error::SOLVER_FAILURE, "the reduced system is not positive definite");
+    m_policy = settings.policy;
+    bool factored = false;
+    if(m_policy == EXACT_CONSTRAINTS)
+    {
+      std::vector<char> prescribed(region.is_fixed.size(), 0);
+      for(int i : set.constrained)
+        prescribed[static_cast<std::size_t>(i)] = 1;
+      factored = m_detail.prepare_dirichlet(prescribed);
+    }
+    else
+      factored = m_detail.prepare_soft(region.is_fixed);
+    if(!factored)
+      throw Error(Error::SOLVER_FAILURE, "the factorization of the detail transfer failed");
+  }
+
+  /// Per target change: the positions of the region for the `targets` of the
+  /// constrained vertices (one row each, in the order of `set`), continuing
+  /// the iteration from the last accepted result. `accept()` makes it the
+  /// start of the next call.
+  void deform(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
+              unsigned int iterations, double tolerance, Positions& result, Spectral_deformation_report& report)
+  {
+    CGAL_precondition(targets.rows() == static_cast<Eigen::Index>(set.size()));
+    const auto start = std::chrono::steady_clock::now();
+    const Positions& rest = region.arrays.positions;
+    const Positions smooth = smooth_targets(set, rest, m_solver.smooth_rest(), targets);
+    m_pending = (m_has_solution && Iterated) ? m_coefficients : m_solver.rest_coefficients();
+    const Iteration_report iteration =
+        m_solver.solve(smooth, m_pending, Iterated ? static_cast<int>(iterations) - 1 : 0, tolerance);
+    report.iterations = static_cast<unsigned int>(iteration.iterations + 1);
+    report.last_step = iteration.last_step;
+    report.converged = iteration.converged;
+    report.solve_seconds = seconds_since(start);
+
+    const auto transfer_start = std::chrono::steady_clock::now();
+    const Positions smooth_deformed = m_solver.shape(m_pending);
+    const bool transferred = (m_policy == EXACT_CONSTRAINTS)
+                                 ? transfer_exact(region, set, targets, smooth_deformed, result)
+                                 : transfer_soft(region, set, targets, smooth_deformed, result);
+    if(!transferred)
+      throw Spectral_deformation_error(Spectral_deformation_error::SOLVER_FAILURE, "the detail transfer failed (a face of the smooth "
+                                         "deformed mesh is degenerate)");
+    report.detail_transfer_seconds = seconds_since(transfer_start);
+  }
+
+  /// The result of the last `deform()` was written: the iteration goes on from it.
+  void accept()
+  {
+    m_coefficients.swap(m_pending);
+    m_has_solution = true;
+  }
+
+  /// The next `deform()` starts from the rest shape.
+  void restart() { m_has_solution = false; }
+
+  void set_single_precision(bool single) { m_solver.set_single_precision(single); }
+  const Basis_data& basis() const { return m_basis; }
+  std::size_t number_of_frequencies() const { return static_cast<std::size_t>(m_basis.basis.cols()); }
+  Eigen::RowVector3d smooth_rest(Eigen::Index i) const { return m_solver.smooth_rest().row(i); }
+  /// The smooth deformed position of local vertex `i` (the smooth rest one
+  /// before the first accepted result).
+  Eigen::RowVector3d smooth_deformed(Eigen::Index i) const
+  {
+    if(!m_has_solution)
+      return smooth_rest(i);
+    return (m_basis.basis.row(i) * m_coefficients).eval();
+  }
+
+private:
+  bool transfer_exact(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
+                      const Positions& smooth_deformed, Positions& result) const
+  {
+    Positions prescribed(region.arrays.positions.rows(), 3);
+    for(std::size_t k = 0; k < set.size(); ++k)
+      prescribed.row(set.constrained[k]) = targets.row(static_cast<Eigen::Index>(k));
+    return m_detail.transfer_exact(smooth_deformed, prescribed, result);
+  }
+
+  // The fixed vertices around the ROI are anchored: only the control
+  // vertices are soft.
+  bool transfer_soft(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
+                     const Positions& smooth_deformed, Positions& result) const
+  {
+    const Positions& rest = region.arrays.positions;
+    Positions anchored(rest.rows(), 3);
+    for(std::size_t i = 0; i < region.is_fixed.size(); ++i)
+      if(region.is_fixed[i])
+        anchored.row(static_cast<Eigen::Index>(i)) = rest.row(static_cast<Eigen::Index>(i));
+    if(!m_detail.transfer_soft(smooth_deformed, anchored, set.constrained, targets, result))
+      return false;
+    meet_soft_constraints(region, set, targets, result);
+    return true;
+  }
+
+  // The detail transfer carries the rotations of the smooth mesh, not its
+  // stretch, so the control vertices end farther from their targets than
+  // the smooth mesh did. The residuals are met as the reduced system meets
+  // its targets, by a smooth field of the basis added to the region (not to
+  // the fixed vertices, which stay where they are).
+  void meet_soft_constraints(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
+                             Positions& result) const
+  {
+    typedef Spectral_deformation_error Error;
+    Positions residuals(targets.rows(), 3);
+    for(std::size_t k = 0; k < set.size(); ++k)
+      residuals.row(static_cast<Eigen::Index>(k)) =
+          targets.row(static_cast<Eigen::Index>(k)) - result.row(set.constrained[k]);
+    const Positions correction = m_solver.shape(m_solver.fit_constraints(residuals));
+    if(!correction.allFinite())
+      throw Error(Error::SOLVER_FAILURE, "the iteration produced non-finite values");
+    for(std::size_t i = 0; i < region.is_fixed.size(); ++i)
+      if(!region.is_fixed[i])
+        result.row(static_cast<Eigen::Index>(i)) += correction.row(static_cast<Eigen::Index>(i));
+  }
+
+  Basis_data m_basis;
+  Spectral_dual_laplacian_solver m_solver;
+  Detail_transfer<SparseSPDSolverTraits> m_detail;
+  Spectral_constraint_policy m_policy = EXACT_CONSTRAINTS;
+  Eigen::MatrixXd m_coefficients, m_pending;
+  bool m_has_solution = false;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPECTRAL_PIPELINE_H
