@@ -136,8 +136,8 @@ public:
   /// The sparse solver traits type of the detail transfer.
   typedef typename Default::Get<ST, Default_deformation_sparse_spd_solver_traits>::type Sparse_solver_traits;
   /// The sparse solver traits type of the spatial solver.
-  // The spatial solver's system couples two rings of neighbours: there the
-  // supernodal factor was measured faster (1.22 s against 2.30 s at 104k).
+  // The spatial solver's system couples two rings of neighbours, dense
+  // enough for a supernodal factor to pay (see benchmark/NOTES.md).
   typedef typename Default::Get<ST, Default_sparse_spd_solver_traits>::type Spatial_solver_traits;
   /// The point type.
   typedef typename boost::property_traits<Vertex_point_map>::value_type Point;
@@ -541,7 +541,7 @@ public:
   std::size_t number_of_frequencies() const { return m_settings.frequencies; }
   /// Sets the number of frequencies; a region with fewer vertices uses all of
   /// them. A different value makes the next `preprocess()` rebuild the
-  /// region, basis included. Not used by `SPATIAL_DUAL_LAPLACIAN`.
+  /// region, basis included. Does not compile with `SPATIAL_DUAL_LAPLACIAN`.
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `m` is 0.
   void set_number_of_frequencies(std::size_t m)
   {
@@ -560,7 +560,7 @@ public:
   /// Sets the constraint weight, a change of the constraint set. Larger
   /// weights meet the constraints of the smooth mesh more closely but the
   /// truncated basis cannot form sharp transitions, which degrades the
-  /// result; smaller weights loosen the constraints. Not used by
+  /// result; smaller weights loosen the constraints. Does not compile with
   /// `SPATIAL_DUAL_LAPLACIAN`.
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) unless `w` is positive and finite.
   void set_constraint_weight(double w)
@@ -574,7 +574,7 @@ public:
   /// The constraint policy (default `EXACT_CONSTRAINTS`).
   Spectral_constraint_policy constraint_policy() const { return m_settings.policy; }
   /// Sets the constraint policy; a different policy is a change of the
-  /// constraint set. Not used by `SPATIAL_DUAL_LAPLACIAN`.
+  /// constraint set. Does not compile with `SPATIAL_DUAL_LAPLACIAN`.
   void set_constraint_policy(Spectral_constraint_policy policy)
   {
     static_assert(is_spectral, "set_constraint_policy(): SPATIAL_DUAL_LAPLACIAN always meets the constraints exactly");
@@ -597,10 +597,9 @@ public:
   /// Stores the copy of the basis that every iteration of `deform()` reads
   /// in float (4 n m bytes instead of 8 n m); the arithmetic stays in double.
   /// Not the default: the reduced systems amplify the rounding of the copy,
-  /// and the armadillo arm (104k vertices, m = 100) deformed 1.1e-4 of the
-  /// bounding-box diagonal away from the double precision result, above the
-  /// 1e-6 a default must meet (see the manual's benchmark). Takes effect at
-  /// once, the basis is kept. Not used by `SPATIAL_DUAL_LAPLACIAN`.
+  /// and results move by about \f$ 10^{-4} \f$ of the bounding-box diagonal
+  /// (see the manual's Performance section). Takes effect at once, the
+  /// basis is kept. Does not compile with `SPATIAL_DUAL_LAPLACIAN`.
   void set_single_precision_basis(bool single)
   {
     static_assert(is_spectral, "set_single_precision_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
@@ -619,8 +618,8 @@ public:
   /// vertex in the ROI (for instance, the ROI is the whole mesh), the
   /// vertices are indexed alike and the initial geometry is the one `basis`
   /// was computed with. Its number of frequencies then prevails. Otherwise
-  /// it is ignored and `preprocess_report().basis_computed` tells. Not used
-  /// by `SPATIAL_DUAL_LAPLACIAN`.
+  /// it is ignored and `preprocess_report().basis_computed` tells. Does not
+  /// compile with `SPATIAL_DUAL_LAPLACIAN`.
   template <class EigensolverTraits>
   void set_basis(const Manifold_harmonics_basis<TM, EigensolverTraits>& basis)
   {

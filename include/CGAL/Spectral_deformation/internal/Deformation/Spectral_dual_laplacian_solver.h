@@ -198,8 +198,8 @@ private:
       m_panels.multiply_transpose(values, result);
   }
 
-  // Buffers of the iteration, kept between calls: fresh pages cost more than
-  // the arithmetic on them (a first touch is ~10 µs per 4 KiB page here).
+  // Buffers of the iteration, kept between calls: the first touch of fresh
+  // pages costs more than the arithmetic on them.
   struct Workspace
   {
     Positions shape, centroids, normals, faces, vertices;
