@@ -8,106 +8,20 @@
 #define CGAL_SPECTRAL_DEFORMATION_SPECTRA_EIGENSOLVER_TRAITS_H
 
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Spectra_lanczos.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/dense_eigenpairs.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
-#include <Spectra/SymGEigsShiftSolver.h>
 
-#include <algorithm>
 #include <cstddef>
-#include <exception>
 #include <functional>
 #include <string>
 
 namespace CGAL {
-namespace Spectral_deformation {
-namespace internal {
-
-// The shift of both eigensolvers: negative and small against the low end of
-// the spectrum (the first non-zero eigenvalue of a sphere of the same area is
-// 8 pi / area), so that Q - sigma M is positive definite although Q is
-// singular.
-inline double shift_invert_shift(const Eigen::VectorXd& mass)
-{
-  return -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
-}
-
-// Q - sigma M for the diagonal (lumped) mass matrix M.
-inline Eigen::SparseMatrix<double> shifted_stiffness(const Eigen::SparseMatrix<double>& stiffness,
-                                                     const Eigen::VectorXd& mass, double sigma)
-{
-  Eigen::SparseMatrix<double> shifted = stiffness;
-  for(Eigen::Index i = 0; i < mass.size(); ++i)
-    shifted.coeffRef(i, i) -= sigma * mass[i];
-  return shifted;
-}
-
-// y = (Q - sigma M)^{-1} x, with the factorization done by a sparse SPD
-// solver traits. Spectra's own SymShiftInvert uses a sparse LU, which is
-// far slower on these systems. `after_solve`, when set, is called after
-// every solve (the Lanczos iteration cannot be observed otherwise).
-template <class SparseSPDSolverTraits>
-class Shift_invert_operator
-{
-public:
-  typedef double Scalar;
-
-  Shift_invert_operator(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
-                        const std::function<void()>* after_solve = nullptr)
-    : m_stiffness(stiffness), m_mass(mass), m_after_solve(after_solve)
-  {}
-
-  Eigen::Index rows() const { return m_stiffness.rows(); }
-  Eigen::Index cols() const { return m_stiffness.cols(); }
-
-  void set_shift(double sigma)
-  {
-    if(!m_solver.factor(shifted_stiffness(m_stiffness, m_mass, sigma)))
-      throw std::runtime_error("the factorization of the shifted stiffness matrix failed");
-  }
-
-  void perform_op(const double* x_in, double* y_out) const
-  {
-    m_rhs = Eigen::Map<const Eigen::VectorXd>(x_in, rows());
-    if(!m_solver.solve(m_rhs, m_solution))
-      throw std::runtime_error("a shift-invert solve failed");
-    Eigen::Map<Eigen::VectorXd>(y_out, rows()) = m_solution.col(0);
-    if(m_after_solve != nullptr)
-      (*m_after_solve)();
-  }
-
-private:
-  const Eigen::SparseMatrix<double>& m_stiffness;
-  const Eigen::VectorXd& m_mass;
-  const std::function<void()>* m_after_solve;
-  SparseSPDSolverTraits m_solver;
-  mutable Eigen::MatrixXd m_rhs, m_solution;
-};
-
-// y = M x for the diagonal (lumped) mass matrix.
-class Diagonal_mass_operator
-{
-public:
-  typedef double Scalar;
-  explicit Diagonal_mass_operator(const Eigen::VectorXd& mass) : m_mass(mass) {}
-  Eigen::Index rows() const { return m_mass.size(); }
-  Eigen::Index cols() const { return m_mass.size(); }
-  void perform_op(const double* x_in, double* y_out) const
-  {
-    Eigen::Map<Eigen::VectorXd>(y_out, rows()) =
-        m_mass.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(x_in, rows()));
-  }
-
-private:
-  const Eigen::VectorXd& m_mass;
-};
-
-} // namespace internal
-} // namespace Spectral_deformation
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationTraits
-/// The default model of `ManifoldHarmonicsEigensolverTraits`: Spectra's
+/// The reference model of `ManifoldHarmonicsEigensolverTraits`: Spectra's
 /// shift-invert generalized symmetric Lanczos solver, with the shifted system
 /// `Q - sigma M` factored once by a sparse Cholesky/LDLᵀ.
 ///
@@ -123,6 +37,10 @@ private:
 ///
 /// An optional progress callback (`set_progress_callback()`) lets a program
 /// show the progress of a long eigensolve; it does not change the result.
+///
+/// By default `compute()` changes no state of the process;
+/// `set_process_wide_tuning(true)` hands the sparse solver the permission to
+/// do so (see `Cholmod_llt_solver_traits::set_process_wide_tuning()`).
 ///
 /// \tparam SparseSPDSolverTraits a model of `SparseSPDSolverTraits`, used to
 ///         factor `Q - sigma M`.
@@ -172,6 +90,17 @@ public:
   /// reports. The callback must not throw; it is copied with the traits.
   void set_progress_callback(const Progress_callback& callback) { m_progress_callback = callback; }
 
+  /// Whether `compute()` may change state of the whole process to run
+  /// faster (default `false`); see `set_process_wide_tuning()`.
+  bool process_wide_tuning() const { return m_process_wide_tuning; }
+
+  /// Sets `process_wide_tuning()`. The choice is handed to the sparse solver
+  /// that factors `Q - sigma M`, when its traits class has a
+  /// `set_process_wide_tuning()` member (`Cholmod_llt_solver_traits`: it
+  /// then replaces SuiteSparse's global allocator while it factors and
+  /// solves). The result does not depend on it.
+  void set_process_wide_tuning(bool enabled) { m_process_wide_tuning = enabled; }
+
   /// Computes the `m` smallest eigenpairs of `Q h = lambda M h` with
   /// `M = diag(mass)`: `eigenvalues` ascending, `eigenvectors` (n×m)
   /// M-orthonormal. Returns `false`, with `error_message()` set, when the
@@ -183,60 +112,42 @@ public:
     const Eigen::Index n = stiffness.rows();
     if(m < 1 || m > n)
       return fail("the number of eigenpairs must be between 1 and the number of vertices");
-    const Eigen::Index ncv = (std::min)(n, (std::max)(2 * m + 1, m + 20));
+    const Eigen::Index ncv = Spectral_deformation::internal::spectra_subspace_dimension(n, m);
     Progress progress;
     progress.number_of_eigenpairs = static_cast<std::size_t>(m);
     progress.number_of_vertices = static_cast<std::size_t>(n);
+    std::string message;
+    bool success = false;
     if(n <= m_dense_threshold || ncv >= n)
     {
       report(progress, Progress::DENSE_SOLVE);
-      std::string message;
-      const bool success =
-          Spectral_deformation::internal::dense_generalized_eigenpairs(stiffness, mass, m, eigenvalues,
-                                                                      eigenvectors, message) ||
-          fail(message);
-      report(progress, Progress::FINISHED);
-      return success;
+      success = Spectral_deformation::internal::dense_generalized_eigenpairs(
+          stiffness, mass, m, eigenvalues, eigenvectors, message);
     }
-
-    typedef Spectral_deformation::internal::Shift_invert_operator<SparseSPDSolverTraits> Op;
-    typedef Spectral_deformation::internal::Diagonal_mass_operator Mass_op;
-    progress.subspace_dimension = static_cast<std::size_t>(ncv);
-    // Without a callback the operator gets no hook at all.
-    std::function<void()> after_solve;
-    if(m_progress_callback)
-      after_solve = [this, &progress]() {
-        ++progress.solves;
-        m_progress_callback(progress);
-      };
-    report(progress, Progress::FACTORIZATION);
-    bool success = true;
-    try
+    else
     {
-      Op op(stiffness, mass, m_progress_callback ? &after_solve : nullptr);
-      Mass_op mass_op(mass);
-      const double sigma = Spectral_deformation::internal::shift_invert_shift(mass);
-      Spectra::SymGEigsShiftSolver<Op, Mass_op, Spectra::GEigsMode::ShiftInvert> solver(
-          op, mass_op, m, ncv, sigma);
-      // The factorization happens in the constructor of the solver; the
-      // first solve is the one of init().
-      progress.stage = Progress::ITERATION;
-      solver.init();
-      solver.compute(Spectra::SortRule::LargestMagn, m_max_iterations, m_tolerance,
-                     Spectra::SortRule::SmallestAlge);
-      if(solver.info() != Spectra::CompInfo::Successful)
-        success = fail("the Lanczos iteration did not converge within " +
-                       std::to_string(m_max_iterations) + " restarts");
-      else
-      {
-        eigenvalues = solver.eigenvalues();
-        eigenvectors = solver.eigenvectors();
-      }
+      progress.subspace_dimension = static_cast<std::size_t>(ncv);
+      // Without a callback the operator gets no hook at all. The first
+      // solve follows the factorization.
+      std::function<void()> after_solve;
+      if(m_progress_callback)
+        after_solve = [this, &progress]() {
+          ++progress.solves;
+          report(progress, Progress::ITERATION);
+        };
+      report(progress, Progress::FACTORIZATION);
+      Spectral_deformation::internal::Spectra_lanczos_settings settings;
+      settings.subspace_dimension = ncv;
+      settings.max_iterations = m_max_iterations;
+      settings.tolerance = m_tolerance;
+      settings.process_wide_tuning = m_process_wide_tuning;
+      success = Spectral_deformation::internal::spectra_shift_invert_eigenpairs<
+          SparseSPDSolverTraits>(stiffness, mass, m, settings,
+                                 m_progress_callback ? &after_solve : nullptr, eigenvalues,
+                                 eigenvectors, message);
     }
-    catch(const std::exception& e)
-    {
-      success = fail(e.what());
-    }
+    if(!success)
+      fail(message);
     report(progress, Progress::FINISHED);
     return success;
   }
@@ -261,6 +172,7 @@ private:
   int m_max_iterations;
   double m_tolerance;
   Eigen::Index m_dense_threshold;
+  bool m_process_wide_tuning = false;
   std::string m_error_message;
   Progress_callback m_progress_callback;
 };

@@ -1,0 +1,40 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SHIFT_INVERT_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SHIFT_INVERT_H
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+// The shift of both eigensolvers: negative and small against the low end of
+// the spectrum (the first non-zero eigenvalue of a sphere of the same area is
+// 8 pi / area), so that Q - sigma M is positive definite although Q is
+// singular.
+inline double shift_invert_shift(const Eigen::VectorXd& mass)
+{
+  return -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
+}
+
+// Q - sigma M for the diagonal (lumped) mass matrix M.
+inline Eigen::SparseMatrix<double> shifted_stiffness(const Eigen::SparseMatrix<double>& stiffness,
+                                                     const Eigen::VectorXd& mass, double sigma)
+{
+  Eigen::SparseMatrix<double> shifted = stiffness;
+  for(Eigen::Index i = 0; i < mass.size(); ++i)
+    shifted.coeffRef(i, i) -= sigma * mass[i];
+  return shifted;
+}
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SHIFT_INVERT_H

@@ -1,0 +1,77 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_MEMORY_PROCESS_WIDE_TUNING_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_MEMORY_PROCESS_WIDE_TUNING_H
+
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+// The opt-in to the tuning that changes state of the whole process.
+//
+// Some of the speed of the eigensolver comes from settings that belong to
+// the whole process, not to the object that makes them:
+// - the number of OpenBLAS threads (`openblas_set_num_threads()`,
+//   Dense_products.h);
+// - SuiteSparse's allocator, global to the process
+//   (Cholmod_huge_page_allocator.h);
+// - transparent huge pages on large blocks and their pages mapped ahead
+//   (Page_mapping.h, Large_array.h): the advice stays on the address range
+//   after the block is freed.
+// Including a header or using a traits object with its defaults changes
+// none of them. A traits class that can use them has the members
+// `process_wide_tuning()` and `set_process_wide_tuning(bool)` (default
+// `false`); the traits that create other traits objects (the eigensolvers
+// create their sparse solver) hand the choice on with the helpers below,
+// which do nothing for a traits class without these members.
+
+template <class Traits, class = void>
+struct Has_process_wide_tuning : std::false_type
+{};
+
+template <class Traits>
+struct Has_process_wide_tuning<
+    Traits, std::void_t<decltype(std::declval<const Traits&>().process_wide_tuning()),
+                        decltype(std::declval<Traits&>().set_process_wide_tuning(true))>>
+    : std::true_type
+{};
+
+// `traits.process_wide_tuning()`, or `false` for traits without the option.
+template <class Traits>
+bool process_wide_tuning_of(const Traits& traits)
+{
+  if constexpr(Has_process_wide_tuning<Traits>::value)
+    return traits.process_wide_tuning();
+  else
+  {
+    (void)traits;
+    return false;
+  }
+}
+
+// `traits.set_process_wide_tuning(enabled)`, nothing for traits without the
+// option.
+template <class Traits>
+void set_process_wide_tuning_if_supported(Traits& traits, bool enabled)
+{
+  if constexpr(Has_process_wide_tuning<Traits>::value)
+    traits.set_process_wide_tuning(enabled);
+  else
+  {
+    (void)traits;
+    (void)enabled;
+  }
+}
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_MEMORY_PROCESS_WIDE_TUNING_H
