@@ -1,6 +1,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Manifold_harmonics_basis.h>
+#include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
 
 #include <catch2/catch.hpp>
@@ -286,6 +287,52 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
   CHECK_FALSE(block.compute(Q, mass, 0, values, vectors));
   CHECK(!block.error_message().empty());
   CHECK_FALSE(block.compute(Q, mass, Q.rows() + 1, values, vectors));
+}
+
+#ifdef CGAL_SSMD_USE_OPENBLAS
+extern "C" int openblas_get_num_threads(void);
+#endif
+
+TEST_CASE("block Lanczos: settings of the process change only on request",
+          "[basis][block_lanczos]")
+{
+  // 1681 vertices: the block method runs (above the dense threshold).
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(40));
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
+  const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(mesh).diagonal();
+  typedef CGAL::Block_lanczos_eigensolver_traits<> Traits;
+  Eigen::VectorXd values[2];
+  Eigen::MatrixXd vectors[2];
+  for(int tuning = 0; tuning < 2; ++tuning)
+  {
+    INFO("process-wide tuning " << tuning);
+    Traits block;
+    CHECK_FALSE(block.process_wide_tuning());
+    block.set_process_wide_tuning(tuning == 1);
+    CHECK(block.process_wide_tuning() == (tuning == 1));
+    int blas_threads_before = 1;
+    bool blas_threads_as_expected = true;
+#ifdef CGAL_SSMD_USE_OPENBLAS
+    blas_threads_before = openblas_get_num_threads();
+    // While the subspace grows, OpenBLAS runs on one thread only when the
+    // tuning was asked for.
+    block.set_progress_callback([&](const Traits::Progress& progress) {
+      if(progress.stage == progress.ITERATION)
+        blas_threads_as_expected =
+            blas_threads_as_expected &&
+            openblas_get_num_threads() == (tuning == 1 ? 1 : blas_threads_before);
+    });
+#endif
+    REQUIRE(block.compute(Q, mass, 20, values[tuning], vectors[tuning]));
+    CHECK(blas_threads_as_expected);
+#ifdef CGAL_SSMD_USE_OPENBLAS
+    CHECK(openblas_get_num_threads() == blas_threads_before);
+#endif
+  }
+  // The same eigenpairs either way (to rounding: a multi-threaded BLAS may
+  // sum in another order).
+  CHECK((values[0] - values[1]).cwiseAbs().maxCoeff() < 1e-10 * values[0].maxCoeff());
+  CHECK(subspace_distance(vectors[0].leftCols(19), vectors[1].leftCols(19), mass) < 1e-6);
 }
 
 TEST_CASE("block Lanczos: the constants of each component are deflated, only for a Laplacian",

@@ -9,10 +9,10 @@
 
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 #include <CGAL/Spectral_deformation/Block_lanczos_eigensolver_traits.h>
-#include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
-#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
+#include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Named_function_parameters.h>
@@ -42,8 +42,9 @@ inline void normalize_signs(Eigen::MatrixXd& eigenvectors)
 }
 
 /// The m smallest generalized eigenpairs of the cotangent stiffness against
-/// the lumped mass of `mesh` (validated arrays). Throws
-/// `Spectral_deformation_error`.
+/// the lumped mass of `mesh` (validated arrays). The stiffness matrix is
+/// assembled in huge pages when the eigensolver was asked for process-wide
+/// tuning. Throws `Spectral_deformation_error`.
 template <class EigensolverTraits>
 void compute_manifold_harmonics(const Triangle_arrays& mesh, Eigen::Index m,
                                 EigensolverTraits& eigensolver, Eigen::VectorXd& eigenvalues,
@@ -55,7 +56,8 @@ void compute_manifold_harmonics(const Triangle_arrays& mesh, Eigen::Index m,
     throw Error(Error::INVALID_ARGUMENT,
                 "the number of frequencies must be between 1 and the number of vertices (" +
                     std::to_string(n) + "), got " + std::to_string(m));
-  const Eigen::SparseMatrix<double> stiffness = cotangent_stiffness(mesh);
+  const Eigen::SparseMatrix<double> stiffness =
+      cotangent_stiffness(mesh, process_wide_tuning_of(eigensolver));
   mass = lumped_mass(mesh);
   if(!eigensolver.compute(stiffness, mass, m, eigenvalues, eigenvectors))
     throw Error(Error::SOLVER_FAILURE,
@@ -94,9 +96,17 @@ void compute_manifold_harmonics(const Triangle_arrays& mesh, Eigen::Index m,
 /// eigenvalue 0).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`, triangulated.
+/// By default, computing a basis changes no state of the process. A program
+/// that owns its process can let the eigensolver tune settings of the whole
+/// process (OpenBLAS threads, SuiteSparse's allocator, huge pages) by
+/// passing eigensolver traits with `set_process_wide_tuning(true)`; see
+/// `Block_lanczos_eigensolver_traits::set_process_wide_tuning()`.
+///
 /// \tparam EigensolverTraits a model of `ManifoldHarmonicsEigensolverTraits`;
 ///         `CGAL::Default` means `Block_lanczos_eigensolver_traits<>`;
-///         `Spectra_eigensolver_traits<>` is the reference solver.
+///         `Spectra_eigensolver_traits<>` is the reference solver (its
+///         header, `<CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>`,
+///         is not included by this one).
 template <class TriangleMesh, class EigensolverTraits = CGAL::Default>
 class Manifold_harmonics_basis
 {

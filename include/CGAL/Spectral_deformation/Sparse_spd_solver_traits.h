@@ -34,7 +34,7 @@ namespace CGAL {
 ///
 /// Symmetric positive definite systems are factored with a Cholesky or LDLᵀ
 /// decomposition, never with a general LU: on the cotangent systems of this
-/// package an LU with partial pivoting was measured about 250 times slower.
+/// package an LU with partial pivoting was measured far slower.
 ///
 /// \tparam EigenSolver an Eigen sparse solver with the interface of
 ///         `Eigen::SimplicialLDLT` (`compute()`, `info()`, `solve()`), for
@@ -100,15 +100,15 @@ enum Cholmod_factor_form
   CHOLMOD_SUPERNODAL_FACTOR,
   /// Simplicial: column by column. On the cotangent systems of meshes up to
   /// some 10⁵ vertices both its factorization and its solves with a few
-  /// right-hand sides were measured faster: at 104k vertices 0.40 s against
-  /// 0.57 s and 13 ms against 21 ms for three right-hand sides.
+  /// right-hand sides were measured faster.
   ///
   /// Larger systems, whose factorization costs more than
   /// `Cholmod_llt_solver_traits::supernodal_factorization_switch()` flops
   /// per entry of the factor, are factored in supernodal form and the factor
   /// then converted to the simplicial one, without the zeros the supernodes
-  /// carried (CHOLMOD's `final_resymbol`): at 416k vertices (275 flops per
-  /// entry) 2.6 to 3.2 s against 3.3 to 5.4 s, for the same factor.
+  /// carried (CHOLMOD's `final_resymbol`): faster than a simplicial
+  /// factorization there (416k vertices, 275 flops per entry), for the same
+  /// factor.
   CHOLMOD_SIMPLICIAL_FACTOR
 };
 
@@ -120,24 +120,20 @@ enum Cholmod_factor_form
 /// Eigen's `CholmodSupernodalLLT` allocates the solution and CHOLMOD's work
 /// arrays anew in every `solve()`. With many solves against the same factor
 /// (block eigensolvers, iterations), touching that fresh memory costs more
-/// than the triangular solves themselves on some machines: with 150
-/// right-hand sides on a 104k-vertex mesh, a repeated solve took 1.03 s
-/// with fresh arrays and 0.28 s with reused ones.
+/// than the triangular solves themselves on some machines.
 ///
-/// While it factors or solves, SuiteSparse allocates its large blocks in
-/// transparent huge pages where the kernel grants them (Linux; SuiteSparse's
-/// allocator is replaced for that time if it is the default one, and
-/// restored): a factor of hundreds of MiB is then first written with a
-/// page fault per 2 MiB instead of per 4 KiB (the block eigensolver at 416k
-/// vertices: 34,000 page faults instead of 112,000, 0.3 to 1.0 s saved of
-/// 13.5 to 18 s on the virtual machines this package was measured on).
+/// After `set_process_wide_tuning(true)`, SuiteSparse allocates its large
+/// blocks in transparent huge pages while the object factors or solves (see
+/// `set_process_wide_tuning()`); by default it changes no state of the
+/// process.
 ///
 /// CHOLMOD's supernodal factorization runs some of its loops on a fixed
 /// number of OpenMP threads (`CHOLMOD_OMP_NUM_THREADS`, 4). When that is
 /// more than the processors, `factor()` runs them on one thread, nested in
 /// an OpenMP team of two whose second thread waits (unless it is called in
-/// a parallel region, or nested parallelism is enabled): at 416k vertices
-/// the factorization took 2.0 to 3.0 s instead of 2.7 to 3.2 s on two cores.
+/// a parallel region, or nested parallelism is enabled): on two cores the
+/// four threads competed for them and the factorization was slower. The
+/// team is local to the call: no OpenMP setting of the process changes.
 ///
 /// Available when the package is configured with CHOLMOD (the macro
 /// `CGAL_SSMD_USE_CHOLMOD` is defined). Like every model, an object may be
@@ -186,7 +182,7 @@ public:
   /// the factorization runs in supernodal form (see
   /// `CHOLMOD_SIMPLICIAL_FACTOR`). The default, 200, lies between the
   /// cotangent systems of the 104k-vertex armadillo (144 flops per entry,
-  /// simplicial 0.24 to 0.40 s, supernodal 0.48 to 0.56 s) and of the
+  /// where the simplicial factorization was the faster) and of the
   /// 416k-vertex one (275).
   double supernodal_factorization_switch() const { return m_supernodal_switch; }
 
@@ -205,6 +201,25 @@ public:
   /// threads, each solving with CHOLMOD.
   bool solves_in_subtrees() const { return m_subtree_solve.usable(); }
 
+  /// Whether `factor()` and `solve()` may change state of the whole process
+  /// to run faster (default `false`); see `set_process_wide_tuning()`.
+  bool process_wide_tuning() const { return m_process_wide_tuning; }
+
+  /// Sets `process_wide_tuning()`. With `true` (Linux), while `factor()` or
+  /// `solve()` runs, SuiteSparse allocates its blocks of 4 MiB and more with
+  /// transparent huge pages requested: a factor of hundreds of MiB, first
+  /// written by the factorization, then faults once per 2 MiB instead of
+  /// once per 4 KiB page, a large part of the cost of a big factorization on
+  /// the virtual machines this package was measured on. SuiteSparse's
+  /// allocator is global to the process: it is replaced for that time, if
+  /// it is SuiteSparse's default one, and restored afterwards, so that other
+  /// threads calling SuiteSparse meanwhile allocate through it too; and the
+  /// huge-page advice stays on the memory after it is freed. The result
+  /// does not depend on it. The eigensolver traits hand their own setting to
+  /// the solver they create (see
+  /// `Block_lanczos_eigensolver_traits::set_process_wide_tuning()`).
+  void set_process_wide_tuning(bool enabled) { m_process_wide_tuning = enabled; }
+
   /// Factors the symmetric positive definite matrix `A` (both triangles
   /// stored). Returns `false` when the factorization fails.
   bool factor(const Matrix& A)
@@ -218,15 +233,16 @@ public:
       m_factored = m_empty;
       return m_factored;
     }
-    const Spectral_deformation::internal::Cholmod_huge_page_allocator huge_pages;
+    const Spectral_deformation::internal::Cholmod_huge_page_allocator huge_pages(
+        m_process_wide_tuning);
     if(Form == CHOLMOD_SIMPLICIAL_FACTOR)
       m_solver.cholmod().supernodal_switch = m_supernodal_switch;
 #ifdef _OPENMP
     // CHOLMOD's supernodal factorization runs some of its loops on
     // CHOLMOD_OMP_NUM_THREADS (4) threads whatever the machine. Where that
     // is more than the processors, they run on one thread instead, nested
-    // in a team of two whose second thread waits: at 416k vertices the
-    // factorization took 2.0 to 3.0 s instead of 2.7 to 3.2 s on two cores.
+    // in a team of two whose second thread waits (see the class
+    // description).
     if(!omp_in_parallel() && omp_get_num_procs() < CHOLMOD_OMP_NUM_THREADS &&
        omp_get_max_active_levels() <= 1)
     {
@@ -282,14 +298,14 @@ public:
       return false;
     X.resize(B.rows(), B.cols());
     // The work arrays of the first solve are allocated then.
-    const Spectral_deformation::internal::Cholmod_huge_page_allocator huge_pages;
+    const Spectral_deformation::internal::Cholmod_huge_page_allocator huge_pages(
+        m_process_wide_tuning);
     if(m_subtree_solve.usable() && concurrent_threads() >= 2)
       return solve_in_subtrees(B, X) && X.allFinite();
     // Otherwise a simplicial factor is solved column by column without the
     // BLAS: two threads each solve half of the right-hand sides against the
-    // shared, read-only factor, with their own CHOLMOD workspace (1.45× with
-    // 8 right-hand sides on a 104k-vertex mesh; the supernodal solve, which
-    // calls the BLAS, was slower that way).
+    // shared, read-only factor, with their own CHOLMOD workspace (the
+    // supernodal solve, which calls the BLAS, was slower that way).
     const Eigen::Index halves =
         (Form == CHOLMOD_SIMPLICIAL_FACTOR && B.cols() >= 2 && concurrent_threads() >= 2) ? 2 : 1;
     bool success[2] = {true, true};
@@ -378,7 +394,7 @@ private:
       m_rows.resize(static_cast<std::size_t>(n) * width);
       // The rows of B are read in order and written to their place in the
       // factor's ordering (a cache line for eight right-hand sides), on both
-      // threads: these copies took a quarter of the solve on one thread.
+      // threads: on one thread these copies were a large part of the solve.
       double* const work = m_rows.data();
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(2) schedule(static)
@@ -430,6 +446,7 @@ private:
   std::vector<int> m_factor_position;
   bool m_factored = false;
   bool m_empty = false;
+  bool m_process_wide_tuning = false;
 };
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationTraits
@@ -463,10 +480,8 @@ typedef Eigen_sparse_spd_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix
 /// when the package was configured with CHOLMOD, Eigen's `SimplicialLDLT`
 /// otherwise. Against the supernodal factor, the simplicial one was measured
 /// (armadillo Loop-subdivided, cotangent matrix) faster to factor up to
-/// 104k vertices (0.40 s against 0.57 s) and 10 % slower beyond (26.4 s
-/// against 23.7 s at 1.66M), and faster to solve with three right-hand
-/// sides at every size (13 ms against 21 ms at 104k, 0.43 s against 0.62 s
-/// at 1.66M).
+/// 104k vertices and a little slower beyond, and faster to solve with three
+/// right-hand sides at every size.
 #ifdef CGAL_SSMD_USE_CHOLMOD
 typedef Cholmod_simplicial_sparse_spd_solver_traits Default_deformation_sparse_spd_solver_traits;
 #else
@@ -480,8 +495,8 @@ typedef Eigen_sparse_spd_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix
 /// eight right-hand sides): the same as
 /// `Default_deformation_sparse_spd_solver_traits`. With eight right-hand
 /// sides split over two threads, the simplicial factor was measured faster
-/// than the supernodal one on the 104k-vertex armadillo (factorization
-/// 0.45 s against 0.68 s, solve 24 ms against 27 ms).
+/// than the supernodal one on the 104k-vertex armadillo, to factor and to
+/// solve.
 typedef Default_deformation_sparse_spd_solver_traits Default_eigensolver_sparse_spd_solver_traits;
 
 } // namespace CGAL

@@ -23,13 +23,17 @@ namespace internal {
 /// Cotangent stiffness matrix: Q_ij = -(cot a_ij + cot b_ij)/2 for an edge ij
 /// with opposite angles a_ij and b_ij, Q_ii = -sum_j Q_ij. Symmetric, positive
 /// semi-definite, rows summing to zero. The arrays must have been validated
-/// (no degenerate face), which keeps every cotangent finite.
-inline Eigen::SparseMatrix<double> cotangent_stiffness(const Triangle_arrays& mesh)
+/// (no degenerate face), which keeps every cotangent finite. With
+/// `huge_pages`, the temporaries of the assembly are mapped in huge pages
+/// (see Large_array): only when a traits object was asked for process-wide
+/// tuning.
+inline Eigen::SparseMatrix<double> cotangent_stiffness(const Triangle_arrays& mesh,
+                                                       bool huge_pages = false)
 {
   // Assembled in compressed form directly: each column gathers its entries
   // (one per incident face edge, and the diagonal), sorts them by row and
   // merges the two halves of each interior edge. Eigen's triplet assembly
-  // moved four times as much memory and took 0.28 s at 104k vertices.
+  // moved four times as much memory.
   typedef Eigen::SparseMatrix<double>::StorageIndex Index;
   const Eigen::Index n = mesh.number_of_vertices();
   const Eigen::Index faces = mesh.number_of_faces();
@@ -39,10 +43,10 @@ inline Eigen::SparseMatrix<double> cotangent_stiffness(const Triangle_arrays& me
       start[static_cast<std::size_t>(mesh.triangles(f, k)) + 1] += 2;
   for(Eigen::Index j = 0; j < n; ++j)
     start[j + 1] += start[j] + 1; // + 1: the diagonal
-  // Large_array: these temporaries are tens of MiB, in huge pages where
-  // possible (page faults dominated the assembly otherwise).
-  Large_array<Index> row_storage(static_cast<std::size_t>(start[n]));
-  Large_array<double> value_storage(static_cast<std::size_t>(start[n]));
+  // Large_array: these temporaries are tens of MiB, uninitialized; page
+  // faults dominated the assembly unless they are in huge pages.
+  Large_array<Index> row_storage(static_cast<std::size_t>(start[n]), huge_pages);
+  Large_array<double> value_storage(static_cast<std::size_t>(start[n]), huge_pages);
   Index* rows = row_storage.data();
   double* values = value_storage.data();
   std::vector<Index> end(start.begin(), start.end() - 1);

@@ -19,9 +19,9 @@
 // Tall-and-skinny products (n × k by k × b with n ≫ k) dominate the block
 // eigensolver. When a BLAS is linked (CGAL_SSMD_USE_BLAS, set by the CMake
 // package together with CHOLMOD, which needs one anyway), they go to its
-// dgemm, which picks vector instructions at run time (OpenBLAS: AVX2/FMA) and
-// was measured 1.8 to 2.4 times faster here than Eigen's own product compiled
-// without -march. Otherwise Eigen computes them.
+// dgemm, which picks vector instructions at run time (OpenBLAS: AVX2/FMA),
+// which Eigen's own product cannot use when compiled without -march.
+// Otherwise Eigen computes them.
 #ifdef CGAL_SSMD_USE_BLAS
 extern "C" void dgemm_(const char* transa, const char* transb, const int* m, const int* n,
                        const int* k, const double* alpha, const double* a, const int* lda,
@@ -75,17 +75,24 @@ inline void dense_product(bool transpose_a, const Const_matrix_ref& A, bool tran
 #endif
 }
 
-// Runs OpenBLAS on one thread for its lifetime. OpenBLAS's threads keep a
-// core busy waiting for work for a while after each call: between the many
-// small products of an iteration they took the core from the other threads
-// (a two-thread sparse solve ran at one-thread speed), and the tall products,
-// bound by memory, gained little from them. Callers split their work with
+// Runs OpenBLAS on one thread for its lifetime when enabled, and does
+// nothing otherwise. OpenBLAS's threads keep a core busy waiting for work
+// for a while after each call: between the many small products of an
+// iteration they took the core from the other threads (a two-thread sparse
+// solve ran at one-thread speed), and the tall products, bound by memory,
+// gained little from them. Callers split their work with
 // `threaded_dense_product()` instead.
+//
+// The OpenBLAS thread count is a setting of the whole process: while an
+// enabled object lives, other threads calling OpenBLAS run single-threaded
+// too, and the count is restored by the destructor. The package enables it
+// only when a traits object was asked to (`set_process_wide_tuning(true)`,
+// see Memory/Process_wide_tuning.h).
 class Single_threaded_blas
 {
 public:
 #ifdef CGAL_SSMD_USE_OPENBLAS
-  Single_threaded_blas() : m_threads(openblas_get_num_threads())
+  explicit Single_threaded_blas(bool enabled) : m_threads(enabled ? openblas_get_num_threads() : 1)
   {
     if(m_threads > 1)
       openblas_set_num_threads(1);
@@ -96,7 +103,7 @@ public:
       openblas_set_num_threads(m_threads);
   }
 #else
-  Single_threaded_blas() = default;
+  explicit Single_threaded_blas(bool) {}
 #endif
   Single_threaded_blas(const Single_threaded_blas&) = delete;
   Single_threaded_blas& operator=(const Single_threaded_blas&) = delete;

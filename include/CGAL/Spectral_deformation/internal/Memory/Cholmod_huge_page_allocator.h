@@ -7,7 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_MEMORY_CHOLMOD_HUGE_PAGE_ALLOCATOR_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_MEMORY_CHOLMOD_HUGE_PAGE_ALLOCATOR_H
 
-#include <CGAL/Spectral_deformation/internal/Memory/Large_array.h>
+#include <CGAL/Spectral_deformation/internal/Memory/Page_mapping.h>
 
 #include <cholmod.h>
 
@@ -46,23 +46,26 @@ inline void* huge_page_realloc(void* block, std::size_t bytes)
   return moved;
 }
 
-// While an object lives, SuiteSparse allocates through the functions above
-// (SuiteSparse's allocator is global to the process). The factor of a
-// CHOLMOD factorization is hundreds of MiB, first written by the
-// factorization itself, a page fault per 4 KiB otherwise: at 416k vertices
-// the faults of the block eigensolver went from 112,000 to 34,000 and the
-// eigensolve took 0.3 to 1.0 s less (of 13.5 to 18 s) on the virtual
+// While an enabled object lives, SuiteSparse allocates through the functions
+// above. SuiteSparse's allocator is global to the process, hence the flag:
+// the package enables it only when a traits object was asked to
+// (`set_process_wide_tuning(true)`, see Process_wide_tuning.h); a disabled
+// object does nothing. The factor of a CHOLMOD factorization is hundreds of
+// MiB, first written by the factorization itself: a page fault per 4 KiB
+// otherwise, a large part of the cost of a big factorization on the virtual
 // machines this package was measured on.
 // Only SuiteSparse's default allocator is replaced (a user's own is kept),
-// and the default is restored when the last object of the process goes.
-// Objects may live in several threads at once; a third party calling
+// and the default is restored when the last enabled object of the process
+// goes. Objects may live in several threads at once; a third party calling
 // SuiteSparse concurrently gets either allocator, both malloc-compatible.
 class Cholmod_huge_page_allocator
 {
 public:
-  Cholmod_huge_page_allocator()
+  explicit Cholmod_huge_page_allocator(bool enabled) : m_enabled(enabled)
   {
 #if defined(__linux__)
+    if(!m_enabled)
+      return;
     std::lock_guard<std::mutex> lock(state().mutex);
     if(state().users++ == 0)
     {
@@ -77,6 +80,8 @@ public:
   ~Cholmod_huge_page_allocator()
   {
 #if defined(__linux__)
+    if(!m_enabled)
+      return;
     std::lock_guard<std::mutex> lock(state().mutex);
     if(--state().users == 0 && state().installed)
     {
@@ -89,6 +94,8 @@ public:
   }
 
 private:
+  bool m_enabled;
+
   struct State
   {
     std::mutex mutex;

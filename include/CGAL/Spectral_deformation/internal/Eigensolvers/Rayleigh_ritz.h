@@ -1,0 +1,119 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_RAYLEIGH_RITZ_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_RAYLEIGH_RITZ_H
+
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_state.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Largest_eigenpairs.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+// The Rayleigh-Ritz check of the block Lanczos method and its schedule: the
+// eigenpairs of T approximate those of the operator on the subspace.
+
+// The wanted Ritz pairs of the subspace: the `wanted` largest eigenvalues
+// theta of T (ascending) and their coordinates in V; `converged` of them
+// satisfy the tolerance.
+struct Ritz_pairs
+{
+  Eigen::VectorXd values;
+  Eigen::MatrixXd coordinates;
+  Eigen::Index converged = 0;
+};
+
+// Rayleigh-Ritz on the k leading columns. The residual of a Ritz pair
+// (theta, y) is ‖R y_tail‖_M, with y_tail its last b coordinates and R the
+// coupling of the next block: it converged when the residual is at most
+// `tolerance * |theta|`. Returns false when the dense eigensolver fails.
+inline bool rayleigh_ritz(const Block_lanczos_state& state, Eigen::Index k, Eigen::Index wanted,
+                          double tolerance, const Eigen::MatrixXd& R, Ritz_pairs& ritz)
+{
+  const Eigen::MatrixXd projected =
+      0.5 * (state.T.topLeftCorner(k, k) + state.T.topLeftCorner(k, k).transpose());
+  if(!largest_symmetric_eigenpairs(projected, wanted, ritz.values, ritz.coordinates))
+    return false;
+  // Largest theta first: the smallest lambda.
+  ritz.converged = 0;
+  for(Eigen::Index i = 0; i < wanted; ++i)
+  {
+    const Eigen::Index column = wanted - 1 - i;
+    const double theta = ritz.values[column];
+    const double residual = (R * ritz.coordinates.col(column).tail(state.b)).norm();
+    if(residual <= tolerance * std::abs(theta))
+      ++ritz.converged;
+  }
+  return true;
+}
+
+// Each Rayleigh-Ritz check costs a dense k × k eigendecomposition: the
+// checks start where convergence is plausible.
+inline Eigen::Index first_check_dimension(Eigen::Index m, Eigen::Index b)
+{
+  return (std::max)(m + b, round_up((3 * m) / 2, b));
+}
+
+// A block brought about b / 3 eigenpairs to convergence on the armadillo
+// meshes: the next check is spaced by about 1/16 of the dimension k, and
+// comes at every block when fewer than 2 b pairs are missing (the last
+// checks decide how far the subspace overshoots).
+inline Eigen::Index next_check_dimension(Eigen::Index k, Eigen::Index b, Eigen::Index missing)
+{
+  return k + (std::min)(round_up((std::max)(b, k / 16), b),
+                        b * (std::max)(Eigen::Index(1), missing / b));
+}
+
+// The eigenpairs of the converged Ritz pairs: the known zero eigenvalues,
+// then lambda = sigma + 1 / theta, ascending; `selected` (k × wanted)
+// receives the coordinates in the same order.
+inline Eigen::VectorXd ritz_eigenvalues(const Ritz_pairs& ritz, Eigen::Index known, double sigma,
+                                        Eigen::Index k, Eigen::MatrixXd& selected)
+{
+  const Eigen::Index wanted = ritz.values.size();
+  selected.resize(k, wanted);
+  for(Eigen::Index i = 0; i < wanted; ++i)
+    selected.col(i) = ritz.coordinates.col(wanted - 1 - i);
+  Eigen::VectorXd values(known + wanted);
+  values.head(known).setZero();
+  for(Eigen::Index i = 0; i < wanted; ++i)
+    values[known + i] = sigma + 1.0 / ritz.values[wanted - 1 - i];
+  return values;
+}
+
+// Checks ‖Q h - lambda M h‖ against the tolerance directly, relative to the
+// spread of the computed spectrum and the shift, as the residuals reported
+// by the benchmarks.
+inline bool verify_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
+                              const Eigen::VectorXd& mass, const Eigen::VectorXd& eigenvalues,
+                              const Eigen::MatrixXd& eigenvectors, double tolerance)
+{
+  const Eigen::VectorXd inverse_sqrt_mass = mass.cwiseSqrt().cwiseInverse();
+  const double sigma = shift_invert_shift(mass);
+  const double scale = (std::max)(1e-6, 1e3 * tolerance) * (eigenvalues.maxCoeff() - sigma);
+  for(Eigen::Index i = 0; i < eigenvalues.size(); ++i)
+  {
+    const Eigen::VectorXd residual =
+        stiffness * eigenvectors.col(i) - eigenvalues[i] * mass.cwiseProduct(eigenvectors.col(i));
+    if(!(inverse_sqrt_mass.cwiseProduct(residual).norm() <= scale))
+      return false;
+  }
+  return true;
+}
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_RAYLEIGH_RITZ_H
