@@ -20,44 +20,42 @@ namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
 
-/// Cotangent stiffness matrix: Q_ij = -(cot a_ij + cot b_ij)/2 for an edge ij
-/// with opposite angles a_ij and b_ij, Q_ii = -sum_j Q_ij. Symmetric, positive
-/// semi-definite, rows summing to zero. The arrays must have been validated
-/// (no degenerate face), which keeps every cotangent finite. With
-/// `huge_pages`, the temporaries of the assembly are mapped in huge pages
-/// (see Large_array): only when a traits object was asked for process-wide
-/// tuning.
-inline Eigen::SparseMatrix<double> cotangent_stiffness(const Triangle_arrays& mesh,
-                                                       bool huge_pages = false)
+typedef Eigen::SparseMatrix<double>::StorageIndex Stiffness_index;
+
+// The cotangent stiffness matrix is assembled in compressed form directly:
+// each column gathers its entries (one per incident face edge, and the
+// diagonal), sorts them by row and merges the two halves of each interior
+// edge. Eigen's triplet assembly moved four times as much memory.
+
+// Where each column starts in the assembly arrays (n + 1 values): room for
+// the diagonal and two entries per incident face.
+inline std::vector<Stiffness_index> cotangent_column_starts(const Triangle_arrays& mesh)
 {
-  // Assembled in compressed form directly: each column gathers its entries
-  // (one per incident face edge, and the diagonal), sorts them by row and
-  // merges the two halves of each interior edge. Eigen's triplet assembly
-  // moved four times as much memory.
-  typedef Eigen::SparseMatrix<double>::StorageIndex Index;
   const Eigen::Index n = mesh.number_of_vertices();
-  const Eigen::Index faces = mesh.number_of_faces();
-  std::vector<Index> start(static_cast<std::size_t>(n) + 1, 0);
-  for(Eigen::Index f = 0; f < faces; ++f)
+  std::vector<Stiffness_index> start(static_cast<std::size_t>(n) + 1, 0);
+  for(Eigen::Index f = 0; f < mesh.number_of_faces(); ++f)
     for(int k = 0; k < 3; ++k)
       start[static_cast<std::size_t>(mesh.triangles(f, k)) + 1] += 2;
   for(Eigen::Index j = 0; j < n; ++j)
     start[j + 1] += start[j] + 1; // + 1: the diagonal
-  // Large_array: these temporaries are tens of MiB, uninitialized; page
-  // faults dominated the assembly unless they are in huge pages.
-  Large_array<Index> row_storage(static_cast<std::size_t>(start[n]), huge_pages);
-  Large_array<double> value_storage(static_cast<std::size_t>(start[n]), huge_pages);
-  Index* rows = row_storage.data();
-  double* values = value_storage.data();
-  std::vector<Index> end(start.begin(), start.end() - 1);
-  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
+  return start;
+}
+
+// Appends to each column its diagonal entry (0, the row sums come apart in
+// `diagonal`) and the half cotangents -cot(c)/2 of the corners c opposite
+// its edges, unsorted; `end` (the column starts on entry) receives the end
+// of each column.
+inline void add_half_cotangents(const Triangle_arrays& mesh, Stiffness_index* rows,
+                                double* values, std::vector<Stiffness_index>& end,
+                                Eigen::VectorXd& diagonal)
+{
   auto add = [&](int row, int column, double value) {
     rows[end[column]] = row;
     values[end[column]++] = value;
   };
-  for(Eigen::Index j = 0; j < n; ++j)
+  for(Eigen::Index j = 0; j < mesh.number_of_vertices(); ++j)
     add(static_cast<int>(j), static_cast<int>(j), 0.0);
-  for(Eigen::Index f = 0; f < faces; ++f)
+  for(Eigen::Index f = 0; f < mesh.number_of_faces(); ++f)
   {
     for(int k = 0; k < 3; ++k)
     {
@@ -74,55 +72,94 @@ inline Eigen::SparseMatrix<double> cotangent_stiffness(const Triangle_arrays& me
       diagonal[j] += half_cot;
     }
   }
-  // Sort each column by row (a dozen entries: insertion sort) and merge
-  // duplicates in place; `end` becomes the end of the merged column.
-  Index nonzeros = 0;
-  for(Eigen::Index j = 0; j < n; ++j)
+}
+
+// Sorts the entries [first, last) of a column by row (a dozen entries:
+// insertion sort) and merges duplicates in place. Returns the end of the
+// merged column.
+inline Stiffness_index sort_and_merge_column(Stiffness_index* rows, double* values,
+                                             Stiffness_index first, Stiffness_index last)
+{
+  for(Stiffness_index a = first + 1; a < last; ++a)
   {
-    const Index first = start[j], last = end[j];
-    for(Index a = first + 1; a < last; ++a)
+    const Stiffness_index row = rows[a];
+    const double value = values[a];
+    Stiffness_index b = a;
+    for(; b > first && rows[b - 1] > row; --b)
     {
-      const Index row = rows[a];
-      const double value = values[a];
-      Index b = a;
-      for(; b > first && rows[b - 1] > row; --b)
-      {
-        rows[b] = rows[b - 1];
-        values[b] = values[b - 1];
-      }
-      rows[b] = row;
-      values[b] = value;
+      rows[b] = rows[b - 1];
+      values[b] = values[b - 1];
     }
-    Index merged = first;
-    for(Index a = first; a < last; ++a)
-    {
-      if(a > first && rows[a] == rows[merged - 1])
-        values[merged - 1] += values[a];
-      else
-      {
-        rows[merged] = rows[a];
-        values[merged++] = values[a];
-      }
-    }
-    end[j] = merged;
-    nonzeros += merged - first;
+    rows[b] = row;
+    values[b] = value;
   }
+  Stiffness_index merged = first;
+  for(Stiffness_index a = first; a < last; ++a)
+  {
+    if(a > first && rows[a] == rows[merged - 1])
+      values[merged - 1] += values[a];
+    else
+    {
+      rows[merged] = rows[a];
+      values[merged++] = values[a];
+    }
+  }
+  return merged;
+}
+
+// The n × n matrix of the merged columns [start[j], end[j]), `nonzeros`
+// entries in all, with `diagonal` added to the diagonal entries.
+inline Eigen::SparseMatrix<double>
+compress_columns(Eigen::Index n, const std::vector<Stiffness_index>& start,
+                 const std::vector<Stiffness_index>& end, const Stiffness_index* rows,
+                 const double* values, const Eigen::VectorXd& diagonal, Stiffness_index nonzeros)
+{
   Eigen::SparseMatrix<double> stiffness(n, n);
   stiffness.resizeNonZeros(nonzeros);
-  Index* outer = stiffness.outerIndexPtr();
+  Stiffness_index* outer = stiffness.outerIndexPtr();
   outer[0] = 0;
   for(Eigen::Index j = 0; j < n; ++j)
   {
-    const Index count = end[j] - start[j];
+    const Stiffness_index count = end[j] - start[j];
     std::copy(rows + start[j], rows + end[j], stiffness.innerIndexPtr() + outer[j]);
     double* column = stiffness.valuePtr() + outer[j];
     std::copy(values + start[j], values + end[j], column);
-    for(Index a = 0; a < count; ++a)
+    for(Stiffness_index a = 0; a < count; ++a)
       if(stiffness.innerIndexPtr()[outer[j] + a] == j)
         column[a] += diagonal[j];
     outer[j + 1] = outer[j] + count;
   }
   return stiffness;
+}
+
+/// Cotangent stiffness matrix: Q_ij = -(cot a_ij + cot b_ij)/2 for an edge ij
+/// with opposite angles a_ij and b_ij, Q_ii = -sum_j Q_ij. Symmetric, positive
+/// semi-definite, rows summing to zero. The arrays must have been validated
+/// (no degenerate face), which keeps every cotangent finite. With
+/// `huge_pages`, the temporaries of the assembly are mapped in huge pages
+/// (see Large_array): only when a traits object was asked for process-wide
+/// tuning.
+inline Eigen::SparseMatrix<double> cotangent_stiffness(const Triangle_arrays& mesh,
+                                                       bool huge_pages = false)
+{
+  const Eigen::Index n = mesh.number_of_vertices();
+  const std::vector<Stiffness_index> start = cotangent_column_starts(mesh);
+  // Large_array: these temporaries are tens of MiB, uninitialized; page
+  // faults dominated the assembly unless they are in huge pages.
+  Large_array<Stiffness_index> row_storage(static_cast<std::size_t>(start[n]), huge_pages);
+  Large_array<double> value_storage(static_cast<std::size_t>(start[n]), huge_pages);
+  Stiffness_index* rows = row_storage.data();
+  double* values = value_storage.data();
+  std::vector<Stiffness_index> end(start.begin(), start.end() - 1);
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
+  add_half_cotangents(mesh, rows, values, end, diagonal);
+  Stiffness_index nonzeros = 0;
+  for(Eigen::Index j = 0; j < n; ++j)
+  {
+    end[j] = sort_and_merge_column(rows, values, start[j], end[j]);
+    nonzeros += end[j] - start[j];
+  }
+  return compress_columns(n, start, end, rows, values, diagonal, nonzeros);
 }
 
 /// Lumped (barycentric) mass: one third of the area of every incident face.
