@@ -377,54 +377,13 @@ private:
   }
 
   // Solves with the factor split between two threads by subtrees of its
-  // elimination tree, eight right-hand sides at a time (fewer for the last
-  // ones), permuted into rows of the work array.
+  // elimination tree (see Two_subtree_triangular_solve::solve_permuted()).
   bool solve_in_subtrees(const Dense_matrix& B, Dense_matrix& X) const
   {
     const cholmod_factor* L = m_solver.factor();
-    const int* starts = static_cast<const int*>(L->p);
-    const int* rows = static_cast<const int*>(L->i);
-    const double* values = static_cast<const double*>(L->x);
-    const Eigen::Index n = B.rows();
-    const int* position = m_factor_position.data();
-    for(Eigen::Index first = 0; first < B.cols();)
-    {
-      const Eigen::Index count = (std::min)(Eigen::Index(8), B.cols() - first);
-      const int width = count > 4 ? 8 : count > 2 ? 4 : static_cast<int>(count);
-      m_rows.resize(static_cast<std::size_t>(n) * width);
-      // The rows of B are read in order and written to their place in the
-      // factor's ordering (a cache line for eight right-hand sides), on both
-      // threads: on one thread these copies were a large part of the solve.
-      double* const work = m_rows.data();
-#ifdef _OPENMP
-#pragma omp parallel for num_threads(2) schedule(static)
-#endif
-      for(Eigen::Index k = 0; k < n; ++k)
-      {
-        double* target = work + static_cast<std::size_t>(position[k]) * width;
-        for(Eigen::Index c = 0; c < count; ++c)
-          target[c] = B(k, first + c);
-        for(Eigen::Index c = count; c < width; ++c)
-          target[c] = 0.0;
-      }
-      switch(width)
-      {
-      case 8: m_subtree_solve.solve<8>(starts, rows, values, work); break;
-      case 4: m_subtree_solve.solve<4>(starts, rows, values, work); break;
-      case 2: m_subtree_solve.solve<2>(starts, rows, values, work); break;
-      default: m_subtree_solve.solve<1>(starts, rows, values, work); break;
-      }
-#ifdef _OPENMP
-#pragma omp parallel for num_threads(2) schedule(static)
-#endif
-      for(Eigen::Index k = 0; k < n; ++k)
-      {
-        const double* source = work + static_cast<std::size_t>(position[k]) * width;
-        for(Eigen::Index c = 0; c < count; ++c)
-          X(k, first + c) = source[c];
-      }
-      first += count;
-    }
+    m_subtree_solve.solve_permuted(static_cast<const int*>(L->p), static_cast<const int*>(L->i),
+                                   static_cast<const double*>(L->x), m_factor_position.data(), B,
+                                   X, m_rows);
     return true;
   }
 

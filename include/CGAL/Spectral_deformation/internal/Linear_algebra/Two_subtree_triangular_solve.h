@@ -7,6 +7,8 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_TWO_SUBTREE_TRIANGULAR_SOLVE_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_TWO_SUBTREE_TRIANGULAR_SOLVE_H
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -36,9 +38,7 @@ namespace internal {
 // Both threads read the whole block of right-hand sides stored row by row,
 // so that an entry of L updates all of them at once (the reason to prefer
 // this to CHOLMOD's own solve, which reads L once per four right-hand sides
-// and, split by right-hand sides over two threads, twice per block of eight:
-// 0.64 to 0.77 s against 0.89 to 0.97 s for 40 blocks of eight at 104k
-// vertices, 3.0 to 3.15 s against 3.4 to 3.8 s at 416k).
+// and, split by right-hand sides over two threads, twice per block of eight).
 class Two_subtree_triangular_solve
 {
 public:
@@ -50,34 +50,13 @@ public:
   void analyze(int n, const int* starts, const int* rows)
   {
     *this = Two_subtree_triangular_solve();
-    if(n < 2)
+    Elimination_tree tree;
+    if(n < 2 || !read_tree(n, starts, rows, tree))
       return;
-    std::vector<int> parent(n, -1), first_descendant(n), size(n, 1);
-    std::vector<double> entries(n), subtree_entries(n);
-    for(int j = 0; j < n; ++j)
-    {
-      if(starts[j + 1] <= starts[j] || rows[starts[j]] != j)
-        return;
-      for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
-        if(rows[k] <= rows[k - 1])
-          return;
-      if(starts[j + 1] - starts[j] > 1)
-        parent[j] = rows[starts[j] + 1];
-      entries[j] = subtree_entries[j] = double(starts[j + 1] - starts[j]);
-      first_descendant[j] = j;
-    }
-    for(int j = 0; j < n; ++j)
-      if(parent[j] >= 0)
-      {
-        subtree_entries[parent[j]] += subtree_entries[j];
-        size[parent[j]] += size[j];
-        first_descendant[parent[j]] = (std::min)(first_descendant[parent[j]], first_descendant[j]);
-      }
-    // In a postorder, the subtree of j is the range [first descendant, j].
-    for(int j = 0; j < n; ++j)
-      if(size[j] != j - first_descendant[j] + 1)
-        return;
-
+    const std::vector<int>& parent = tree.parent;
+    const std::vector<int>& first_descendant = tree.first_descendant;
+    const std::vector<double>& entries = tree.entries;
+    const std::vector<double>& subtree_entries = tree.subtree_entries;
     std::vector<std::vector<int>> children(n);
     std::vector<int> candidates;
     double total = 0;
@@ -210,7 +189,101 @@ public:
           backward(j);
   }
 
+  // X = A^{-1} B for A = P L Lᵀ Pᵀ, row k of A being row position[k] of
+  // L: eight right-hand sides at a time (fewer for the last ones), permuted
+  // into rows of `work` and solved by solve().
+  void solve_permuted(const int* starts, const int* rows, const double* values,
+                      const int* position, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+                      std::vector<double>& work) const
+  {
+    const Eigen::Index n = B.rows();
+    for(Eigen::Index first = 0; first < B.cols();)
+    {
+      const Eigen::Index count = (std::min)(Eigen::Index(8), B.cols() - first);
+      const int width = count > 4 ? 8 : count > 2 ? 4 : static_cast<int>(count);
+      work.resize(static_cast<std::size_t>(n) * width);
+      // The rows of B are read in order and written to their place in the
+      // factor's ordering (a cache line for eight right-hand sides), on both
+      // threads: on one thread these copies were a large part of the solve.
+      double* const y = work.data();
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(2) schedule(static)
+#endif
+      for(Eigen::Index k = 0; k < n; ++k)
+      {
+        double* target = y + static_cast<std::size_t>(position[k]) * width;
+        for(Eigen::Index c = 0; c < count; ++c)
+          target[c] = B(k, first + c);
+        for(Eigen::Index c = count; c < width; ++c)
+          target[c] = 0.0;
+      }
+      switch(width)
+      {
+      case 8: solve<8>(starts, rows, values, y); break;
+      case 4: solve<4>(starts, rows, values, y); break;
+      case 2: solve<2>(starts, rows, values, y); break;
+      default: solve<1>(starts, rows, values, y); break;
+      }
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(2) schedule(static)
+#endif
+      for(Eigen::Index k = 0; k < n; ++k)
+      {
+        const double* source = y + static_cast<std::size_t>(position[k]) * width;
+        for(Eigen::Index c = 0; c < count; ++c)
+          X(k, first + c) = source[c];
+      }
+      first += count;
+    }
+  }
+
 private:
+  // The elimination tree of L: the parent of each column (-1 for a root),
+  // the first column of its subtree, its entries and those of its subtree.
+  struct Elimination_tree
+  {
+    std::vector<int> parent, first_descendant;
+    std::vector<double> entries, subtree_entries;
+  };
+
+  // Reads the tree off the pattern of L. Returns false when the pattern is
+  // not sorted with the diagonal first, or the columns not in a postorder.
+  static bool read_tree(int n, const int* starts, const int* rows, Elimination_tree& tree)
+  {
+    std::vector<int>& parent = tree.parent;
+    std::vector<int>& first_descendant = tree.first_descendant;
+    std::vector<double>& subtree_entries = tree.subtree_entries;
+    parent.assign(n, -1);
+    first_descendant.resize(n);
+    tree.entries.resize(n);
+    subtree_entries.resize(n);
+    std::vector<int> size(n, 1);
+    for(int j = 0; j < n; ++j)
+    {
+      if(starts[j + 1] <= starts[j] || rows[starts[j]] != j)
+        return false;
+      for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
+        if(rows[k] <= rows[k - 1])
+          return false;
+      if(starts[j + 1] - starts[j] > 1)
+        parent[j] = rows[starts[j] + 1];
+      tree.entries[j] = subtree_entries[j] = double(starts[j + 1] - starts[j]);
+      first_descendant[j] = j;
+    }
+    for(int j = 0; j < n; ++j)
+      if(parent[j] >= 0)
+      {
+        subtree_entries[parent[j]] += subtree_entries[j];
+        size[parent[j]] += size[j];
+        first_descendant[parent[j]] = (std::min)(first_descendant[parent[j]], first_descendant[j]);
+      }
+    // In a postorder, the subtree of j is the range [first descendant, j].
+    for(int j = 0; j < n; ++j)
+      if(size[j] != j - first_descendant[j] + 1)
+        return false;
+    return true;
+  }
+
   // y_j /= L_jj, also copied into `solved`.
   template <int W>
   static void divide_by_diagonal(int j, const int* starts, const double* values, double* y,
