@@ -31,6 +31,7 @@
 #include <istream>
 #include <limits>
 #include <memory>
+#include <new>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -157,6 +158,7 @@ private:
       Selector;
   typedef typename Selector::type Pipeline;
   static constexpr bool is_spectral = Selector::is_spectral;
+  static constexpr const char* out_of_memory = "not enough memory (an allocation failed); nothing was changed";
 
 public:
   /// Whether the algorithm `TAG` works in a basis of manifold harmonics
@@ -360,6 +362,12 @@ public:
       m_preprocess_report.message = e.what();
       m_constraints_valid = false;
     }
+    catch(const std::bad_alloc&)
+    {
+      m_preprocess_report.success = false;
+      m_preprocess_report.message = out_of_memory;
+      m_constraints_valid = false;
+    }
     return m_preprocess_report.success;
   }
 
@@ -485,6 +493,11 @@ public:
     {
       m_deform_report.success = false;
       m_deform_report.message = e.what();
+    }
+    catch(const std::bad_alloc&)
+    {
+      m_deform_report.success = false;
+      m_deform_report.message = out_of_memory;
     }
     m_deform_report.total_seconds = seconds_since(start);
   }

@@ -235,6 +235,7 @@ public:
     }
     const Spectral_deformation::internal::Cholmod_huge_page_allocator huge_pages(
         m_process_wide_tuning);
+    bool computed = false;
     if(Form == CHOLMOD_SIMPLICIAL_FACTOR)
       m_solver.cholmod().supernodal_switch = m_supernodal_switch;
 #ifdef _OPENMP
@@ -253,7 +254,7 @@ public:
         {
           try
           {
-            m_solver.compute(A);
+            computed = m_solver.compute_checked(A);
           }
           catch(...)
           {
@@ -266,8 +267,8 @@ public:
     }
     else
 #endif
-      m_solver.compute(A);
-    m_factored = (m_solver.info() == Eigen::Success && m_solver.factor() != nullptr);
+      computed = m_solver.compute_checked(A);
+    m_factored = computed;
     m_subtree_solve = Spectral_deformation::internal::Two_subtree_triangular_solve();
     const cholmod_factor* L = m_factored ? m_solver.factor() : nullptr;
     if(Form == CHOLMOD_SIMPLICIAL_FACTOR && L != nullptr && !L->is_super && L->is_ll &&
@@ -327,6 +328,20 @@ private:
   struct Factorization : Eigen::CholmodDecomposition<Matrix, Eigen::Lower>
   {
     cholmod_factor* factor() const { return this->m_cholmodFactor; }
+
+    // Eigen's compute() when every allocation succeeds. When CHOLMOD runs
+    // out of memory, its analysis returns no factor, which Eigen's
+    // factorize() then dereferences, and an interrupted factorization keeps
+    // the "success" of its analysis: both are checked here.
+    bool compute_checked(const Matrix& A)
+    {
+      this->cholmod().status = CHOLMOD_OK;
+      this->analyzePattern(A);
+      if(factor() == nullptr || this->cholmod().status < CHOLMOD_OK)
+        return false;
+      this->factorize(A);
+      return this->info() == Eigen::Success && this->cholmod().status >= CHOLMOD_OK;
+    }
   };
 
   // The solution and the work arrays of cholmod_solve2(), kept between
