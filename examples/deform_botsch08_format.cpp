@@ -51,6 +51,12 @@ int main(int argc, char** argv)
   std::filesystem::create_directories(output_dir);
 
   Deformation deformation(mesh);
+  // A program that owns its process may let the solvers change process-wide
+  // state to run faster (OpenBLAS threads, SuiteSparse's allocator); a
+  // library embedding the package should not.
+  CGAL::Block_lanczos_eigensolver_traits<> eigensolver;
+  eigensolver.set_process_wide_tuning(true);
+  deformation.set_eigensolver_traits(eigensolver);
   try
   {
     const auto status = CGAL::IO::read_selection(argv[2], mesh.number_of_vertices());

@@ -334,6 +334,7 @@ private:
                                              ? CGAL::EXACT_CONSTRAINTS
                                              : CGAL::SOFT_CONSTRAINTS);
       Eigensolver_traits eigensolver;
+      eigensolver.set_process_wide_tuning(true); // this program owns its process
       eigensolver.set_progress_callback(
           [&progress_bar](const Eigensolver_traits::Progress& progress) { progress_bar(progress); });
       deformation->set_eigensolver_traits(eigensolver);

@@ -390,6 +390,11 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
   {
     deformation.set_number_of_frequencies(options.frequencies);
     deformation.set_constraint_policy(policy);
+    // This program owns its process: the solvers may change process-wide
+    // state (OpenBLAS threads, SuiteSparse's allocator) to run faster.
+    typename Spectral_deformation<TAG>::Eigensolver_traits eigensolver;
+    eigensolver.set_process_wide_tuning(true);
+    deformation.set_eigensolver_traits(eigensolver);
   }
 
   Run_result first;

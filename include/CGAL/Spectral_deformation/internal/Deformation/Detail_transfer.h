@@ -195,6 +195,14 @@ public:
 
   const Eigen::SparseMatrix<double>& stiffness() const { return m_stiffness; }
 
+  /// Whether the sparse solvers may change process-wide state to run faster
+  /// (see `SparseSPDSolverTraits`); takes effect at the next factorization.
+  void set_process_wide_tuning(bool enabled)
+  {
+    m_soft.set_process_wide_tuning(enabled);
+    m_dirichlet.set_process_wide_tuning(enabled);
+  }
+
 private:
   Positions m_rest;
   Eigen::SparseMatrix<double> m_stiffness;

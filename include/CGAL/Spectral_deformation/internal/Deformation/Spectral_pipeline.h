@@ -15,6 +15,7 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
+#include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 
 #include <CGAL/assertions.h>
@@ -76,6 +77,7 @@ public:
     }
     m_solver.set_single_precision(settings.single_precision_basis);
     m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays);
+    m_detail.set_process_wide_tuning(process_wide_tuning_of(eigensolver));
     m_detail.initialize(region.arrays, m_solver.smooth_rest());
     m_has_solution = false;
   }

@@ -7,7 +7,10 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_DIRICHLET_SYSTEM_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_DIRICHLET_SYSTEM_H
 
+#include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
+
 #include <Eigen/Dense>
+
 #include <Eigen/Sparse>
 
 #include <vector>
@@ -78,6 +81,10 @@ public:
       out.row(m_free[static_cast<std::size_t>(r)]) = x.row(r);
     return true;
   }
+
+  /// Hands the permission to change process-wide state to the solver
+  /// (`SparseSPDSolverTraits::set_process_wide_tuning()`, when it has it).
+  void set_process_wide_tuning(bool enabled) { set_process_wide_tuning_if_supported(m_solver, enabled); }
 
 private:
   SparseSPDSolverTraits m_solver;
