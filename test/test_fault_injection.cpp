@@ -4,7 +4,8 @@
 // makes fewer than k allocations. Each failure must give a clear report, leave
 // the mesh and the targets as they were, and leave the object usable: the same
 // calls without a failure then give the result of a run that never failed.
-// (Not built with the sanitizers, which replace malloc themselves.)
+// (Not built with the sanitizers, which replace malloc themselves, and
+// without OpenMP in the package: see test/CMakeLists.txt.)
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
@@ -14,9 +15,14 @@
 
 #include <Eigen/Geometry>
 
+#include <dlfcn.h>
+#include <execinfo.h>
+
 #include <atomic>
 #include <cerrno>
 #include <cstdlib>
+#include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -30,37 +36,57 @@ namespace {
 // Allocations left before the one that fails; negative: none fails.
 std::atomic<long> allocations_before_failure(-1);
 
-bool allocation_fails()
+// OpenMP's runtime ends the process when one of its allocations fails
+// (CHOLMOD runs OpenMP loops of its own): those are not counted.
+bool called_from_openmp_runtime(void* caller)
+{
+  Dl_info info;
+  return dladdr(caller, &info) != 0 && info.dli_fname != nullptr &&
+         std::strstr(info.dli_fname, "libgomp") != nullptr;
+}
+
+bool allocation_fails(void* caller)
 {
   long left = allocations_before_failure.load(std::memory_order_relaxed);
+  if(left < 0 || called_from_openmp_runtime(caller))
+    return false;
   while(left >= 0)
     if(allocations_before_failure.compare_exchange_weak(left, left - 1))
+    {
+      if(left == 0 && std::getenv("SSMD_FAULT_TRACE") != nullptr)
+      {
+        void* frames[24];
+        backtrace_symbols_fd(frames, backtrace(frames, 24), 2);
+      }
       return left == 0;
+    }
   return false;
 }
 
 } // namespace
 
-extern "C" void* malloc(std::size_t size) { return allocation_fails() ? nullptr : __libc_malloc(size); }
+#define SSMD_ALLOCATION_FAILS allocation_fails(__builtin_return_address(0))
+
+extern "C" void* malloc(std::size_t size) { return SSMD_ALLOCATION_FAILS ? nullptr : __libc_malloc(size); }
 extern "C" void* calloc(std::size_t count, std::size_t size)
 {
-  return allocation_fails() ? nullptr : __libc_calloc(count, size);
+  return SSMD_ALLOCATION_FAILS ? nullptr : __libc_calloc(count, size);
 }
 extern "C" void* realloc(void* pointer, std::size_t size)
 {
-  return allocation_fails() ? nullptr : __libc_realloc(pointer, size);
+  return SSMD_ALLOCATION_FAILS ? nullptr : __libc_realloc(pointer, size);
 }
 extern "C" void* memalign(std::size_t alignment, std::size_t size)
 {
-  return allocation_fails() ? nullptr : __libc_memalign(alignment, size);
+  return SSMD_ALLOCATION_FAILS ? nullptr : __libc_memalign(alignment, size);
 }
 extern "C" void* aligned_alloc(std::size_t alignment, std::size_t size)
 {
-  return allocation_fails() ? nullptr : __libc_memalign(alignment, size);
+  return SSMD_ALLOCATION_FAILS ? nullptr : __libc_memalign(alignment, size);
 }
 extern "C" int posix_memalign(void** pointer, std::size_t alignment, std::size_t size)
 {
-  if(allocation_fails())
+  if(SSMD_ALLOCATION_FAILS)
     return ENOMEM;
   void* p = __libc_memalign(alignment, size);
   if(p == nullptr)
@@ -152,6 +178,8 @@ void inject_failures(CGAL::Spectral_constraint_policy policy)
     Bent_bar<Deformation> bar(policy);
     const Eigen::MatrixXd rest = positions_of(bar.mesh);
     const std::vector<Eigen::Vector3d> targets = bar.targets();
+    if(std::getenv("SSMD_FAULT_TRACE") != nullptr) // the allocation that fails, to replay a crash
+      std::fprintf(stderr, "allocation %ld\n", k);
     const bool failed = bar.run(k);
     if(!failed)
       break; // fewer than k allocations: every one has failed once

@@ -382,10 +382,34 @@ private:
     right_hand_side.z = nullptr;
     right_hand_side.xtype = CHOLMOD_REAL;
     right_hand_side.dtype = CHOLMOD_DOUBLE;
-    if(!cholmod_solve2(CHOLMOD_A, m_solver.factor(), &right_hand_side, nullptr, &work.solution,
+    common->status = CHOLMOD_OK;
+    cholmod_factor* L = m_solver.factor();
+    if(L->is_super)
+    {
+      // The supernodal solve makes two work arrays, Y then E, and checks
+      // for a failed allocation only after both, while making E resets the
+      // status: a failure to make Y goes unseen and the solve dereferences
+      // it. They are made here, each checked, with the sizes the solve
+      // reuses.
+      const std::size_t columns = static_cast<std::size_t>(count);
+      cholmod_ensure_dense(&work.y, L->n, columns, L->n, L->xtype, common);
+      if(common->status >= CHOLMOD_OK)
+        cholmod_ensure_dense(&work.e, columns, L->maxesize, columns, L->xtype, common);
+      if(common->status < CHOLMOD_OK)
+      {
+        work.release(common);
+        return false;
+      }
+    }
+    if(!cholmod_solve2(CHOLMOD_A, L, &right_hand_side, nullptr, &work.solution,
                        nullptr, &work.y, &work.e, common) ||
-       work.solution == nullptr)
+       work.solution == nullptr || common->status < CHOLMOD_OK)
+    {
+      // Out of memory: the work arrays may be half made; the next solve
+      // makes them anew.
+      work.release(common);
       return false;
+    }
     X.middleCols(first, count) =
         Eigen::Map<const Dense_matrix>(static_cast<const double*>(work.solution->x), B.rows(), count);
     return true;
