@@ -22,5 +22,7 @@ for ((r = 0; r < repeats; ++r)); do
 done
 printf '%s\n' "${times[@]}" | sort -n | awk '{a[NR]=$1} END {printf "compile seconds: median %.2f (runs:", a[int((NR+1)/2)]; for(i=1;i<=NR;++i) printf " %.2f", a[i]; print ")"}'
 c++ "$out/probe.o" -o "$out/probe" "$@" -lcholmod -lsuitesparseconfig -lopenblas -lgmp -lmpfr -lpthread
-echo "links: $(ldd "$out/probe" | awk '{print $1}' | grep -E 'gomp|cholmod|openblas' | tr '\n' ' ')"
+# Direct dependencies (ldd would add libgomp through Debian's CHOLMOD, which
+# uses OpenMP internally whatever the program does).
+echo "needs: $(readelf -d "$out/probe" | awk '/NEEDED/ {print $5}' | tr -d '[]' | grep -E 'gomp|cholmod|openblas' | tr '\n' ' ')"
 rm -rf "$out"
