@@ -499,7 +499,7 @@ public:
       m_deform_report.success = false;
       m_deform_report.message = out_of_memory;
     }
-    m_deform_report.total_seconds = seconds_since(start);
+    m_deform_report.total_seconds = Spectral_deformation::internal::seconds_since(start);
   }
 
   /// Puts the vertices of the ROI back at their initial positions, resets the
@@ -789,11 +789,6 @@ private:
       throw Error(Error::INVALID_ARGUMENT, "a target position is not finite");
   }
 
-  static double seconds_since(std::chrono::steady_clock::time_point start)
-  {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-
   void roi_changed()
   {
     if(m_region)
@@ -821,7 +816,7 @@ private:
       region->pipeline.build(*region);
     m_region = std::move(region);
     m_preprocess_report.region_rebuilt = true;
-    m_preprocess_report.region_seconds = seconds_since(start);
+    m_preprocess_report.region_seconds = Spectral_deformation::internal::seconds_since(start);
   }
 
   void preprocess_or_throw()
@@ -854,7 +849,7 @@ private:
       region.pipeline.prepare(region, m_constraints, m_settings);
     else
       region.pipeline.prepare(region, m_constraints);
-    m_preprocess_report.factorization_seconds = seconds_since(start);
+    m_preprocess_report.factorization_seconds = Spectral_deformation::internal::seconds_since(start);
     m_constraints_valid = true;
   }
 

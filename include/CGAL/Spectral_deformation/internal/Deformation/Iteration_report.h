@@ -9,9 +9,17 @@
 
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 
+#include <chrono>
+
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+
+/// Wall-clock seconds since `start`, for the times of the reports.
+inline double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// What an iterative solve did: rotation updates performed after the linear
 /// solve, the last relative step, and whether it converged. A solve that

@@ -51,8 +51,7 @@ public:
     report.iterations = static_cast<unsigned int>(iteration.iterations + 1);
     report.last_step = iteration.last_step;
     report.converged = iteration.converged;
-    report.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.solve_seconds = seconds_since(start);
     m_pending = result;
   }
 

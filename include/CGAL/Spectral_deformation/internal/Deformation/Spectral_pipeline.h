@@ -29,11 +29,6 @@ namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
 
-inline double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 /// The settings of a spectral deformation that its pipeline reads.
 struct Spectral_settings
 {
