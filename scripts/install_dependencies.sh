@@ -10,6 +10,8 @@ packages=(
   libcgal-dev libeigen3-dev libboost-dev libspectra-dev libsuitesparse-dev libopenblas-dev catch2
   libcgal-demo doxygen
   f3d xvfb xauth python3-pil python3-matplotlib fonts-dejavu-core
+  libopenmesh-dev libcli11-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest
   "$@"
 )
 
