@@ -1,0 +1,316 @@
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""Tests of the Python package ssmd: agreement with the C++ API, analytic
+spectra, exact handles, clear exceptions, the basis cache, the progress
+callback, the GIL and reference counts."""
+
+import gc
+import os
+import subprocess
+import sys
+import threading
+import tracemalloc
+import warnings
+
+import numpy as np
+import pytest
+
+import ssmd
+from conftest import icosphere, tube
+
+
+def reference_deformation(V, F, roi, handles, targets, algorithm, policy, m, iterations, tolerance):
+    """The same deformation through the C++ API (tests/reference_deformation.cpp)."""
+    program = os.environ.get("SSMD_PYTHON_REFERENCE")
+    if not program:
+        pytest.skip("SSMD_PYTHON_REFERENCE is not set (run through ctest)")
+    lines = ["%d %d" % (len(V), len(F))]
+    lines += ["%r %r %r" % tuple(p) for p in V.tolist()]
+    lines += ["%d %d %d" % tuple(f) for f in F.tolist()]
+    lines += [str(len(roi)), " ".join(map(str, roi))]
+    lines += [str(len(handles)), " ".join(map(str, handles))]
+    lines += ["%r %r %r" % tuple(p) for p in targets.tolist()]
+    lines += ["%s %s %d %d %r" % (algorithm, policy, m, iterations, tolerance)]
+    out = subprocess.run([program], input="\n".join(lines) + "\n", capture_output=True, text=True,
+                         check=True).stdout
+    return np.array([[float(x) for x in line.split()] for line in out.splitlines()])
+
+
+def bent_targets(V, handles):
+    """The top ring moved sideways and turned by 40 degrees about x."""
+    a = np.radians(40)
+    R = np.array([[1, 0, 0], [0, np.cos(a), -np.sin(a)], [0, np.sin(a), np.cos(a)]])
+    P = V[handles]
+    c = P.mean(axis=0)
+    return (P - c) @ R.T + c + np.array([0.0, 0.8, -0.3])
+
+
+@pytest.mark.parametrize("algorithm,policy", [("spectral", "exact"), ("spectral", "soft"),
+                                              ("linear", "exact"), ("spatial", "exact")])
+def test_same_result_as_the_cpp_api(tube_mesh, algorithm, policy):
+    V, F, fixed, handles = tube_mesh
+    roi = np.setdiff1d(np.arange(len(V)), fixed)
+    targets = bent_targets(V, handles)
+    d = ssmd.Deformation(V, F, roi=roi, handles=handles, m=30, policy=policy, algorithm=algorithm)
+    d.set_targets(targets)
+    W = d.deform(iterations=6, tolerance=0.0)
+    expected = reference_deformation(V, F, roi, handles, targets, algorithm, policy, 30, 6, 0.0)
+    assert W.shape == V.shape
+    assert np.max(np.abs(W - expected)) <= 1e-12
+
+
+def test_exact_handles_and_fixed_vertices(tube_mesh):
+    V, F, fixed, handles = tube_mesh
+    V_before, F_before = V.copy(), F.copy()
+    d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=30)
+    targets = bent_targets(V, handles)
+    d.set_targets(targets)
+    W = d.deform()
+    assert np.max(np.abs(W[handles] - targets)) < 1e-9
+    assert np.array_equal(W[fixed], V[fixed])
+    assert np.max(np.abs(W - V)) > 0.5          # the tube did bend
+    assert np.array_equal(d.vertices, W)
+    assert np.array_equal(V, V_before) and np.array_equal(F, F_before)   # inputs untouched
+    report = d.deform_report
+    assert report["success"] and report["iterations"] >= 1 and report["max_control_residual"] < 1e-9
+    assert d.preprocess_report["number_of_frequencies"] == 30
+
+
+def test_roi_and_fixed_are_complements(tube_mesh):
+    V, F, fixed, handles = tube_mesh
+    d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=20)
+    assert np.array_equal(d.roi, np.setdiff1d(np.arange(len(V)), fixed))
+    assert np.array_equal(d.handles, handles)
+
+
+def test_rigid_motion_of_all_handles_is_reproduced(tube_mesh):
+    """A free tube moved rigidly by its two end rings moves rigidly: at once
+    for a translation; for a rotation, at the convergence of the iteration,
+    which starts from the Laplacian coordinates of the rest shape."""
+    V, F, _, _ = tube_mesh
+    handles = np.concatenate([np.arange(20), np.arange(len(V) - 20, len(V))])
+    t = np.array([0.3, -0.2, 0.5])
+    d = ssmd.Deformation(V, F, handles=handles, m=40)
+    d.set_targets(V[handles] + t)
+    assert np.max(np.abs(d.deform(iterations=1) - (V + t))) < 1e-10
+    a = np.radians(30)
+    R = np.array([[np.cos(a), -np.sin(a), 0], [np.sin(a), np.cos(a), 0], [0, 0, 1]])
+    d = ssmd.Deformation(V, F, handles=handles, m=40)
+    d.set_targets(V[handles] @ R.T + t)
+    errors = [np.max(np.abs(d.deform(iterations=k, tolerance=0.0) - (V @ R.T + t))) for k in (5, 25, 70)]
+    assert errors[0] > errors[1] > errors[2] and errors[2] < 1e-5
+
+
+def test_translate_and_rotate_move_targets(tube_mesh):
+    V, F, fixed, handles = tube_mesh
+    d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=20)
+    d.translate([0.0, 0.0, 1.0])
+    assert np.allclose(d.targets, V[handles] + [0, 0, 1], atol=1e-15)
+    d.translate([1.0, 0.0, 0.0], which=[0])
+    assert np.allclose(d.targets[0], V[handles[0]] + [1, 0, 1], atol=1e-15)
+    assert np.allclose(d.targets[1:], V[handles[1:]] + [0, 0, 1], atol=1e-15)
+    d.reset()
+    assert np.array_equal(d.targets, V[handles])
+    a = np.radians(50)
+    R = np.array([[1, 0, 0], [0, np.cos(a), -np.sin(a)], [0, np.sin(a), np.cos(a)]])
+    d.rotate(R, center=[0, 0, 3])
+    by_matrix = d.targets
+    d.reset()
+    d.rotate([np.cos(a / 2), np.sin(a / 2), 0, 0], center=[0, 0, 3])
+    assert np.allclose(d.targets, by_matrix, atol=1e-14)
+    assert np.allclose(by_matrix, (V[handles] - [0, 0, 3]) @ R.T + [0, 0, 3], atol=1e-14)
+
+
+def test_reset_restores_the_input(tube_mesh):
+    V, F, fixed, handles = tube_mesh
+    d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=20)
+    d.translate([0.0, 0.5, 0.0])
+    assert not np.array_equal(d.deform(), V)
+    d.reset()
+    assert np.array_equal(d.vertices, V)
+
+
+def test_integer_types_of_faces_agree(tube_mesh):
+    V, F, fixed, handles = tube_mesh
+    results = []
+    for faces in (F, F.astype(np.int32), F.astype(np.uint32), F.tolist()):
+        d = ssmd.Deformation(V, faces, fixed=fixed, handles=handles.astype(np.int32), m=20)
+        d.translate([0.0, 0.4, 0.0])
+        results.append(d.deform())
+    for W in results[1:]:
+        assert np.array_equal(W, results[0])
+
+
+def test_spectrum_of_the_sphere():
+    """The Laplace-Beltrami eigenvalues of the unit sphere are l(l+1) with
+    multiplicity 2l+1; the basis is orthonormal for the mass matrix."""
+    V, F = icosphere(3)
+    eigenvalues, basis, mass = ssmd.manifold_harmonics(V, F, 16, mass=True)
+    assert eigenvalues.shape == (16,) and basis.shape == (len(V), 16) and mass.shape == (len(V),)
+    expected = np.array([0] + [2] * 3 + [6] * 5 + [12] * 7, dtype=float)
+    assert abs(eigenvalues[0]) < 1e-8
+    assert np.allclose(eigenvalues[1:], expected[1:], rtol=0.03)
+    assert np.allclose(basis.T @ (mass[:, None] * basis), np.eye(16), atol=1e-8)
+    assert np.isclose(mass.sum(), 4 * np.pi, rtol=0.01)
+    only_two = ssmd.manifold_harmonics(V, F, 16)
+    assert len(only_two) == 2 and np.array_equal(only_two[0], eigenvalues)
+
+
+def expect_value_error(match, call):
+    with pytest.raises(ValueError, match=match):
+        call()
+
+
+def test_bad_input_raises_value_error(tube_mesh):
+    V, F, fixed, handles = tube_mesh
+    make = lambda **kw: ssmd.Deformation(kw.pop("V", V), kw.pop("F", F), **{"handles": handles, "fixed": fixed, "m": 20, **kw})
+    expect_value_error(r"V must have shape \(k, 3\)", lambda: make(V=V[:, :2]))
+    bad = V.copy(); bad[7, 1] = np.nan
+    expect_value_error("V has a non-finite coordinate in row 7", lambda: make(V=bad))
+    expect_value_error("F must hold integers", lambda: make(F=F.astype(float)))
+    bad = F.copy(); bad[3, 2] = len(V)
+    expect_value_error(r"F\[3\] refers to vertex", lambda: make(F=bad))
+    bad = F.copy(); bad[5, 1] = bad[5, 0]
+    expect_value_error(r"F\[5\] repeats a vertex", lambda: make(F=bad))
+    expect_value_error("non-manifold", lambda: make(F=np.vstack([F, F[:1]])))
+    expect_value_error("handles lists vertex", lambda: make(handles=np.concatenate([handles, handles[:1]])))
+    expect_value_error("not in the region of interest", lambda: make(handles=fixed[:3]))
+    expect_value_error("both in roi and in fixed", lambda: make(roi=np.arange(len(V))))
+    expect_value_error("must be positive", lambda: make(m=0))
+    expect_value_error("policy must be", lambda: make(policy="hard"))
+    expect_value_error("algorithm must be", lambda: make(algorithm="arap"))
+    expect_value_error("constraint_weight", lambda: make(constraint_weight=-1.0))
+    expect_value_error("basis_cache: the 'spatial' algorithm", lambda: make(algorithm="spatial", basis_cache="x"))
+    expect_value_error("not a vertex index", lambda: make(handles=[-1]))
+    # Rejected by the library itself, with its message.
+    with pytest.raises(ValueError, match="constraint"):
+        make(handles=[], fixed=None)
+    degenerate = V.copy(); degenerate[F[0, 2]] = 0.5 * (degenerate[F[0, 0]] + degenerate[F[0, 1]])
+    with pytest.raises(ValueError, match="degenerate"):
+        make(V=degenerate)
+    isolated = np.vstack([V, [[5.0, 5.0, 5.0]]])
+    expect_value_error("vertex 480 belongs to no face", lambda: make(V=isolated))
+    with pytest.raises(ValueError, match="m = 700 frequencies"):
+        ssmd.manifold_harmonics(V, F, 700)
+
+
+def test_bad_targets_change_nothing(tube_mesh):
+    V, F, fixed, handles = tube_mesh
+    d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=20)
+    before = d.targets
+    P = before + 1.0
+    P[4, 2] = np.inf
+    expect_value_error("non-finite coordinate in row 4", lambda: d.set_targets(P))
+    expect_value_error("rows for", lambda: d.set_targets(P[:3]))
+    expect_value_error("must be finite", lambda: d.translate([0, np.nan, 0]))
+    expect_value_error("not a rotation", lambda: d.rotate(2 * np.eye(3)))
+    expect_value_error("norm 1", lambda: d.rotate([2, 0, 0, 0]))
+    expect_value_error("indices into handles", lambda: d.translate([0, 0, 1], which=[len(handles)]))
+    expect_value_error("tolerance", lambda: d.deform(tolerance=float("nan")))
+    assert np.array_equal(d.targets, before)
+    assert np.array_equal(d.vertices, V)
+
+
+def test_basis_cache(tube_mesh, tmp_path):
+    V, F, fixed, handles = tube_mesh
+    cache = tmp_path / "tube.basis"
+    first = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=25, basis_cache=cache)
+    assert first.preprocess_report["basis_computed"] and cache.exists()
+    second = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=25, basis_cache=str(cache))
+    assert not second.preprocess_report["basis_computed"]
+    for d in (first, second):
+        d.translate([0.0, 0.6, 0.0])
+    assert np.array_equal(first.deform(), second.deform())
+    with pytest.warns(UserWarning, match="holds 25 frequencies, not 30"):
+        other = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=30, basis_cache=cache)
+    assert other.preprocess_report["number_of_frequencies"] == 30
+    cache.write_bytes(b"not a basis")
+    with pytest.warns(UserWarning, match="cannot be used"):
+        again = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=25, basis_cache=cache)
+    assert again.preprocess_report["basis_computed"]
+    saved = tmp_path / "saved.basis"
+    again.save_basis(saved)
+    moved = V.copy(); moved[:, 0] *= 1.5
+    with pytest.raises(ValueError):
+        ssmd.Deformation(moved, F, fixed=fixed, handles=handles, m=25).load_basis(saved)
+    with pytest.raises(OSError):
+        first.load_basis(tmp_path / "missing.basis")
+
+
+def test_progress_callback_and_tqdm_like_bar(tube_mesh):
+    V, F, fixed, handles = tube_mesh
+    states = []
+    ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=30, progress=states.append)
+    stages = [s["stage"] for s in states]
+    assert stages[-1] == "finished" and len(stages) >= 2
+    assert all(s["number_of_eigenpairs"] == 30 for s in states)
+
+    class Bar:
+        total, n, refreshed = None, 0, 0
+
+        def refresh(self):
+            self.refreshed += 1
+
+    bar = Bar()
+    ssmd.manifold_harmonics(V, F, 30, progress=ssmd.progress_bar(bar))
+    assert bar.total == 30 and bar.n == 30 and bar.refreshed >= 2
+
+    def failing(state):
+        raise KeyError("stop")
+
+    with pytest.raises(KeyError, match="stop"):
+        ssmd.manifold_harmonics(V, F, 30, progress=failing)
+    with pytest.raises(ValueError, match="callable"):
+        ssmd.Deformation(V, F, fixed=fixed, handles=handles, progress=3)
+
+
+def test_gil_is_released_during_the_eigensolve():
+    V, F = icosphere(5)   # 10,242 vertices
+    counter = [0]
+    done = threading.Event()
+
+    def solve():
+        ssmd.manifold_harmonics(V, F, 60)
+        done.set()
+
+    worker = threading.Thread(target=solve)
+    worker.start()
+    while not done.is_set():
+        counter[0] += 1
+    worker.join()
+    # Holding the GIL, the solve would leave this thread only the few
+    # switch intervals before it starts.
+    assert counter[0] > 100000
+
+
+def test_no_reference_or_memory_leak_over_1000_calls(tube_mesh):
+    V, F, fixed, handles = tube_mesh
+    d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=20)
+    gc.collect()
+    refs = (sys.getrefcount(V), sys.getrefcount(F), sys.getrefcount(handles))
+
+    def calls(count):
+        for i in range(count):
+            d.set_targets(V[handles] + [0.0, 0.001 * (i % 7), 0.0])
+            d.deform(iterations=2)
+            d.deform_report, d.preprocess_report, d.targets, d.vertices
+            ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=8, algorithm="spatial") if i % 50 == 0 else None
+            try:
+                d.set_targets(np.full((len(handles), 3), np.nan))
+            except ValueError:
+                pass
+
+    calls(50)
+    gc.collect()
+    tracemalloc.start()
+    before = tracemalloc.get_traced_memory()[0]
+    calls(1000)
+    gc.collect()
+    after = tracemalloc.get_traced_memory()[0]
+    tracemalloc.stop()
+    assert (sys.getrefcount(V), sys.getrefcount(F), sys.getrefcount(handles)) == refs
+    assert after - before < 64 * 1024
+
+
+def test_version():
+    assert ssmd.__version__.count(".") == 2
