@@ -578,7 +578,7 @@ int main(int argc, char** argv)
         Deformation_tool::parse_command_line(argc, argv);
     if(options.help)
     {
-      std::cout << Deformation_tool::help_text();
+      std::cout << options.help_text;
       return EXIT_SUCCESS;
     }
     if(options.version)

@@ -1,14 +1,19 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The options of the command-line tool ssmd_deform and its help text.
+// The options of the command-line tool ssmd_deform and its help text, on
+// CLI11 (Debian package libcli11-dev).
 
 #ifndef SSMD_TOOLS_COMMAND_LINE_OPTIONS_H
 #define SSMD_TOOLS_COMMAND_LINE_OPTIONS_H
 
 #include "Deformation_constraints.h" // parse_real, parse_index
 
+#include <CLI/CLI.hpp>
+
 #include <cstddef>
+#include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,7 +38,7 @@ struct Command_line_options
   std::string selection_file;       // a .sel file and
   std::string transformation_file;  // a .def file
   std::string output_file;          // empty: <mesh without extension>_deformed.<extension>
-  std::string basis_cache_file;     // empty: <mesh>.ssmd-basis-m<m>
+  std::string basis_cache_file;     // empty: a file of the user's cache folder
   Algorithm algorithm = Algorithm::SPECTRAL;
   Policy policy = Policy::EXACT;
   std::size_t frequencies = 100;
@@ -45,54 +50,25 @@ struct Command_line_options
   bool quiet = false;
   bool help = false;
   bool version = false;
+  std::string help_text; // filled when `help` is set
 };
 
-inline const char* help_text()
-{
-  return R"(Usage: ssmd_deform [options] MESH CONSTRAINTS
-       ssmd_deform [options] MESH SELECTION.sel TRANSFORMATION.def
+namespace internal {
 
-Deforms a triangle mesh with spectral dual Laplacian editing (Spectral Surface
+inline const char* description_text()
+{
+  return R"(Deforms a triangle mesh with spectral dual Laplacian editing (Spectral Surface
 Deformation with Dual Mesh) and writes the result.
 
 MESH is any file that CGAL::IO::read_polygon_mesh reads into a Surface_mesh
 (.off, .obj, .ply, .stl, .ts, .vtp when CGAL has VTK). It must be a triangle
 mesh. Vertex ids are 0-based, in the order of the vertices of the mesh as read
-(for OFF, OBJ and PLY files: the order of the file).
+(for OFF, OBJ and PLY files: the order of the file).)";
+}
 
-Options:
-  -o, --output PATH       where to write the result; the format follows the
-                          extension (.off, .obj, .ply, .stl, .ts). Default:
-                          MESH without its extension + "_deformed" + extension.
-                          The file is written only when everything succeeded.
-  --algorithm NAME        spectral (default): the paper's iterated spectral dual
-                          Laplacian editing; linear: the same reduced system
-                          solved once, without following rotations; spatial: dual
-                          Laplacian editing on the full-resolution region (no
-                          basis, slower to prepare on large regions).
-  --frequencies M         number of manifold harmonics of the basis (default 100;
-                          a region with fewer vertices uses all of them).
-  --iterations N          maximal number of solves of the iteration (default 10,
-                          at least 1).
-  --tolerance T           stop when the relative step falls below T (default
-                          1e-4; 0 runs all iterations).
-  --weight W              constraint weight of the reduced system (default 1).
-  --policy NAME           exact (default): handles land exactly on their targets;
-                          soft: the paper's least-squares constraints.
-  --basis-cache PATH      file that stores the basis between runs. Default: next
-                          to the mesh, MESH.ssmd-basis-mM (M = --frequencies). A
-                          cache that belongs to another mesh, another region of
-                          interest or another geometry, or that is corrupted, is
-                          detected, ignored with a warning and rewritten.
-  --no-cache              neither read nor write a basis cache.
-  --render                also write OUTPUT_before.png and OUTPUT_after.png
-                          (OUTPUT without extension), rendered with the same
-                          camera by f3d under xvfb-run (both must be installed).
-  -q, --quiet             print only warnings and errors.
-  -h, --help              print this help and exit.
-  --version               print the version and exit.
-
-Constraints, format 1: a .sel and a .def file (Botsch and Sorkine 2008).
+inline const char* footer_text()
+{
+  return R"(Constraints, format 1: a .sel and a .def file (Botsch and Sorkine 2008).
   The .sel file holds one status per vertex, in vertex order: 0 fixed (outside
   the region of interest), 1 region of interest, 2 handle. The .def file holds
   a 4x4 row-major matrix (last row 0 0 0 1) that moves the handle vertices.
@@ -124,178 +100,294 @@ comment:
     handle box -1e9 0.9 -1e9  1e9 1e9 1e9     # the top is moved
     rotate 1 0 0  45  0 0.9 0
 
-Output: a progress bar while the basis is computed (on a terminal), then a
-report: the timing of every phase, the iterations, and the largest distance of
-a handle vertex to its target relative to the bounding-box diagonal of the
-mesh.
+Basis cache: the basis of the region of interest, the expensive part of the
+preparation, is kept between runs in $XDG_CACHE_HOME/ssmd/ (by default
+~/.cache/ssmd/), in a file named after a hash of the mesh file, of the region
+of interest and of the number of frequencies; a second run on the same mesh
+and region, with other handles or targets, skips the eigensolve. Delete the
+folder to reclaim the space.
+
+Output: while the basis is computed, a progress bar that fits the terminal on
+standard error, or, when standard error is not a terminal (a pipe, a log
+file), a line every tenth of the work or every few seconds. Then a report on
+standard output: the timing of every phase, the iterations, and the largest
+distance of a handle vertex to its target relative to the bounding-box
+diagonal of the mesh.
 
 Exit status: 0 on success, 1 when an input cannot be read or the deformation
 fails (nothing is written then), 2 on an invalid command line.
 )";
 }
 
-namespace internal {
-
-inline std::size_t parse_count(const std::string& option, const std::string& value,
-                               std::size_t minimum)
+// Breaks `text` into lines of at most `width` characters at spaces; the
+// line breaks of `text` are kept.
+inline std::string wrap(const std::string& text, std::size_t width)
 {
-  std::size_t result = 0;
-  if(!parse_index(value, result) || result < minimum)
-    throw Usage_error(option + " expects an integer of at least " + std::to_string(minimum) +
-                      ", got '" + value + "'");
+  std::string result, line;
+  std::istringstream paragraphs(text);
+  std::string paragraph;
+  bool first_paragraph = true;
+  while(std::getline(paragraphs, paragraph))
+  {
+    if(!first_paragraph)
+      result += '\n';
+    first_paragraph = false;
+    std::istringstream words(paragraph);
+    std::string word;
+    line.clear();
+    while(words >> word)
+    {
+      if(!line.empty() && line.size() + 1 + word.size() > width)
+      {
+        result += line + '\n';
+        line.clear();
+      }
+      line += (line.empty() ? "" : " ") + word;
+    }
+    result += line;
+  }
   return result;
 }
 
-inline double parse_non_negative(const std::string& option, const std::string& value,
-                                 bool allow_zero)
+// The layout of `--help`: the usage lines first, option names as
+// "-o, --output PATH", and descriptions wrapped to 80 columns. CLI11's own
+// notes (defaults, exclusions) are left out: the descriptions say them in
+// words.
+class Help_formatter : public CLI::Formatter
+{
+public:
+  static constexpr std::size_t name_width = 26;
+  static constexpr std::size_t line_width = 80;
+
+  Help_formatter() { column_width(name_width); }
+
+  std::string make_help(const CLI::App* app, std::string name, CLI::AppFormatMode mode) const override
+  {
+    if(mode == CLI::AppFormatMode::Sub)
+      return CLI::Formatter::make_help(app, name, mode);
+    std::ostringstream out;
+    out << make_usage(app, name) << '\n'
+        << make_description(app) << make_groups(app, mode) << '\n'
+        << app->get_footer();
+    return out.str();
+  }
+
+  std::string make_usage(const CLI::App*, std::string name) const override
+  {
+    return "Usage: " + name + " [options] MESH CONSTRAINTS\n       " + name +
+           " [options] MESH SELECTION.sel TRANSFORMATION.def\n";
+  }
+
+  std::string make_option_name(const CLI::Option* option, bool positional) const override
+  {
+    std::string names = CLI::Formatter::make_option_name(option, positional);
+    std::string result;
+    for(char c : names)
+      result += (c == ',') ? std::string(", ") : std::string(1, c);
+    return result;
+  }
+
+  std::string make_option_opts(const CLI::Option* option) const override
+  {
+    return option->get_option_text().empty() ? std::string() : " " + option->get_option_text();
+  }
+
+  std::string make_option_desc(const CLI::Option* option) const override
+  {
+    return wrap(option->get_description(), line_width - name_width);
+  }
+};
+
+// A CLI11 check with the tool's own message: "OPTION expects WHAT, got
+// 'VALUE'". It throws instead of returning the message because CLI11 would
+// prefix the message with "OPTION: ", and the tool's messages read as a
+// sentence.
+template <class Accepts>
+CLI::Validator expects(const std::string& option, const std::string& what, Accepts accepts)
+{
+  return CLI::Validator(
+      [option, what, accepts](std::string& value) -> std::string {
+        if(!accepts(value))
+          throw Usage_error(option + " expects " + what + ", got '" + value + "'");
+        return std::string();
+      },
+      "");
+}
+
+inline bool is_count_at_least(const std::string& value, std::size_t minimum, std::size_t maximum)
+{
+  std::size_t result = 0;
+  return parse_index(value, result) && result >= minimum && result <= maximum;
+}
+
+inline bool is_non_negative(const std::string& value, bool allow_zero)
 {
   double result = 0;
-  if(!parse_real(value, result) || result < 0 || (!allow_zero && result == 0))
-    throw Usage_error(option + " expects a " + (allow_zero ? "non-negative" : "positive") +
-                      " finite number, got '" + value + "'");
-  return result;
+  return parse_real(value, result) && result >= 0 && (allow_zero || result > 0);
+}
+
+// The option CLI11 names at the start of a message ("--iterations: ...",
+// or "render was given ..." for a flag), for the messages the tool
+// rephrases.
+inline std::string leading_option(const std::string& message)
+{
+  std::string name = message.substr(0, message.find_first_of(": "));
+  name.erase(0, name.find_first_not_of('-'));
+  if(name.empty())
+    return name;
+  return (name.size() == 1 ? "-" : "--") + name;
 }
 
 } // namespace internal
 
-/// Parses the command line; throws `Usage_error`.
+/// Parses the command line; throws `Usage_error`. `--help` sets `help` and
+/// `help_text`, `--version` sets `version`; the other fields are then not
+/// checked.
 inline Command_line_options parse_command_line(int argc, const char* const* argv)
 {
   Command_line_options options;
-  std::vector<std::string> positional;
-  bool only_positional = false;
-  for(int i = 1; i < argc; ++i)
-  {
-    std::string word = argv[i];
-    if(only_positional || word.empty() || word[0] != '-' || word == "-")
-    {
-      positional.push_back(word);
-      continue;
-    }
-    if(word == "--")
-    {
-      only_positional = true;
-      continue;
-    }
-    // --name=value or --name value
-    std::string value;
-    bool has_inline_value = false;
-    const std::size_t equal = word.find('=');
-    if(word.compare(0, 2, "--") == 0 && equal != std::string::npos)
-    {
-      value = word.substr(equal + 1);
-      word = word.substr(0, equal);
-      has_inline_value = true;
-    }
-    auto takes_no_value = [&]() {
-      if(has_inline_value)
-        throw Usage_error(word + " takes no value");
-    };
-    auto next_value = [&]() -> std::string {
-      if(has_inline_value)
-        return value;
-      if(i + 1 >= argc)
-        throw Usage_error(word + " expects a value");
-      return argv[++i];
-    };
+  std::vector<std::string> files;
+  std::string algorithm = "spectral", policy = "exact";
 
-    if(word == "-h" || word == "--help")
-    {
-      takes_no_value();
-      options.help = true;
-    }
-    else if(word == "--version")
-    {
-      takes_no_value();
-      options.version = true;
-    }
-    else if(word == "-q" || word == "--quiet")
-    {
-      takes_no_value();
-      options.quiet = true;
-    }
-    else if(word == "--render")
-    {
-      takes_no_value();
-      options.render = true;
-    }
-    else if(word == "--no-cache")
-    {
-      takes_no_value();
-      options.use_cache = false;
-    }
-    else if(word == "-o" || word == "--output")
-    {
-      options.output_file = next_value();
-      if(options.output_file.empty())
-        throw Usage_error(word + " expects a file name");
-    }
-    else if(word == "--basis-cache")
-    {
-      options.basis_cache_file = next_value();
-      if(options.basis_cache_file.empty())
-        throw Usage_error(word + " expects a file name");
-    }
-    else if(word == "--algorithm")
-    {
-      const std::string name = next_value();
-      if(name == "spectral")
-        options.algorithm = Algorithm::SPECTRAL;
-      else if(name == "linear")
-        options.algorithm = Algorithm::LINEAR;
-      else if(name == "spatial")
-        options.algorithm = Algorithm::SPATIAL;
-      else
-        throw Usage_error("--algorithm expects spectral, linear or spatial, got '" + name + "'");
-    }
-    else if(word == "--policy")
-    {
-      const std::string name = next_value();
-      if(name == "exact")
-        options.policy = Policy::EXACT;
-      else if(name == "soft")
-        options.policy = Policy::SOFT;
-      else
-        throw Usage_error("--policy expects exact or soft, got '" + name + "'");
-    }
-    else if(word == "--frequencies")
-      options.frequencies = internal::parse_count(word, next_value(), 1);
-    else if(word == "--iterations")
-    {
-      const std::size_t iterations = internal::parse_count(word, next_value(), 1);
-      if(iterations > 100000)
-        throw Usage_error("--iterations expects at most 100000, got " + std::to_string(iterations));
-      options.iterations = static_cast<unsigned int>(iterations);
-    }
-    else if(word == "--tolerance")
-      options.tolerance = internal::parse_non_negative(word, next_value(), true);
-    else if(word == "--weight")
-      options.constraint_weight = internal::parse_non_negative(word, next_value(), false);
-    else
-      throw Usage_error("unknown option '" + word + "'");
+  CLI::App app(internal::description_text(), "ssmd_deform");
+  app.formatter(std::make_shared<internal::Help_formatter>());
+  // Unknown options are reported by the tool (see below), in its own words.
+  app.allow_extras();
+  // As with most command-line tools, the last occurrence of an option wins.
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  const auto not_empty = [](const std::string& value) { return !value.empty(); };
+  app.add_option("-o,--output", options.output_file,
+                 "where to write the result; the format follows the extension (.off, .obj, .ply, "
+                 ".stl, .ts). Default: MESH without its extension + \"_deformed\" + extension. The "
+                 "file is written only when everything succeeded.")
+      ->option_text("PATH")
+      ->check(internal::expects("--output", "a file name", not_empty));
+  app.add_option("--algorithm", algorithm,
+                 "spectral (default): the paper's iterated spectral dual Laplacian editing; linear: "
+                 "the same reduced system solved once, without following rotations; spatial: dual "
+                 "Laplacian editing on the full-resolution region (no basis, slower to prepare on "
+                 "large regions).")
+      ->option_text("NAME")
+      ->check(internal::expects("--algorithm", "spectral, linear or spatial", [](const std::string& v) {
+        return v == "spectral" || v == "linear" || v == "spatial";
+      }));
+  app.add_option("--frequencies", options.frequencies,
+                 "number of manifold harmonics of the basis (default 100; a region with fewer "
+                 "vertices uses all of them).")
+      ->option_text("M")
+      ->check(internal::expects("--frequencies", "an integer of at least 1", [](const std::string& v) {
+        return internal::is_count_at_least(v, 1, static_cast<std::size_t>(-1));
+      }));
+  app.add_option("--iterations", options.iterations,
+                 "maximal number of solves of the iteration (default 10, at least 1).")
+      ->option_text("N")
+      ->check(internal::expects("--iterations", "an integer from 1 to 100000", [](const std::string& v) {
+        return internal::is_count_at_least(v, 1, 100000);
+      }));
+  app.add_option("--tolerance", options.tolerance,
+                 "stop when the relative step falls below T (default 1e-4; 0 runs all iterations).")
+      ->option_text("T")
+      ->check(internal::expects("--tolerance", "a non-negative finite number",
+                                [](const std::string& v) { return internal::is_non_negative(v, true); }));
+  app.add_option("--weight", options.constraint_weight,
+                 "constraint weight of the reduced system (default 1).")
+      ->option_text("W")
+      ->check(internal::expects("--weight", "a positive finite number",
+                                [](const std::string& v) { return internal::is_non_negative(v, false); }));
+  app.add_option("--policy", policy,
+                 "exact (default): handles land exactly on their targets; soft: the paper's "
+                 "least-squares constraints.")
+      ->option_text("NAME")
+      ->check(internal::expects("--policy", "exact or soft", [](const std::string& v) {
+        return v == "exact" || v == "soft";
+      }));
+  CLI::Option* basis_cache =
+      app.add_option("--basis-cache", options.basis_cache_file,
+                     "file that stores the basis between runs, instead of the cache folder "
+                     "($XDG_CACHE_HOME/ssmd/, by default ~/.cache/ssmd/). A cache that belongs to "
+                     "another mesh, another region of interest or another geometry, or that is "
+                     "corrupted, is detected, ignored with a warning and rewritten.")
+          ->option_text("PATH")
+          ->check(internal::expects("--basis-cache", "a file name", not_empty));
+  bool no_cache = false;
+  app.add_flag("--no-cache", no_cache, "neither read nor write a basis cache.")->excludes(basis_cache);
+  app.add_flag("--render", options.render,
+               "also write OUTPUT_before.png and OUTPUT_after.png (OUTPUT without extension), "
+               "rendered with the same camera by f3d under xvfb-run (both must be installed).");
+  app.add_flag("-q,--quiet", options.quiet,
+               "print only warnings and errors: no progress and no report.");
+  app.set_help_flag("-h,--help", "print this help and exit.");
+  app.add_flag("--version", options.version, "print the version and exit.");
+  app.add_option("files", files)->group("");
+  app.footer(internal::footer_text());
+
+  // Flags take no value: "--render=false" is refused rather than read.
+  for(CLI::Option* option : app.get_options())
+    if(option->get_expected_max() == 0)
+      option->disable_flag_override();
+
+  try
+  {
+    app.parse(argc, argv);
   }
-  if(options.help || options.version)
+  catch(const CLI::CallForHelp&)
+  {
+    options.help = true;
+    options.help_text = app.help();
+    return options;
+  }
+  catch(const CLI::ArgumentMismatch& e)
+  {
+    const std::string option = internal::leading_option(e.what());
+    const std::string message = e.what();
+    if(!option.empty() && message.find("flag override") != std::string::npos)
+      throw Usage_error(option + " takes no value");
+    if(!option.empty() && message.find("missing") != std::string::npos)
+      throw Usage_error(option + " expects a value");
+    throw Usage_error(message);
+  }
+  catch(const CLI::ExcludesError&)
+  {
+    throw Usage_error("--no-cache and --basis-cache exclude each other");
+  }
+  catch(const CLI::ParseError& e)
+  {
+    throw Usage_error(e.what());
+  }
+  if(options.version)
     return options;
 
-  if(positional.size() == 2)
+  // Whatever CLI11 did not recognize: an unknown option, or, after "--",
+  // a file name.
+  for(const std::string& word : app.remaining())
+    if(word.size() > 1 && word[0] == '-')
+      throw Usage_error("unknown option '" + word.substr(0, word.find('=')) + "'");
+  const std::vector<std::string> remaining = app.remaining();
+  files.insert(files.end(), remaining.begin(), remaining.end());
+
+  options.algorithm = algorithm == "linear"    ? Algorithm::LINEAR
+                      : algorithm == "spatial" ? Algorithm::SPATIAL
+                                               : Algorithm::SPECTRAL;
+  options.policy = policy == "soft" ? Policy::SOFT : Policy::EXACT;
+  options.use_cache = !no_cache;
+
+  if(files.size() == 2)
   {
-    options.mesh_file = positional[0];
-    options.constraint_file = positional[1];
+    options.mesh_file = files[0];
+    options.constraint_file = files[1];
   }
-  else if(positional.size() == 3)
+  else if(files.size() == 3)
   {
-    options.mesh_file = positional[0];
-    options.selection_file = positional[1];
-    options.transformation_file = positional[2];
+    options.mesh_file = files[0];
+    options.selection_file = files[1];
+    options.transformation_file = files[2];
   }
   else
-    throw Usage_error(positional.empty()
+    throw Usage_error(files.empty()
                           ? std::string("missing the mesh and the constraints")
                           : "expected MESH CONSTRAINTS or MESH SELECTION.sel TRANSFORMATION.def, got " +
-                                std::to_string(positional.size()) + " file name" +
-                                (positional.size() == 1 ? "" : "s"));
-  if(options.use_cache == false && !options.basis_cache_file.empty())
-    throw Usage_error("--no-cache and --basis-cache exclude each other");
+                                std::to_string(files.size()) + " file name" +
+                                (files.size() == 1 ? "" : "s"));
   return options;
 }
 
