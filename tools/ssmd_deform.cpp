@@ -382,8 +382,11 @@ private:
   {
     typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, TAG> Deformation;
     constexpr bool uses_basis = Deformation::has_basis;
-    const bool interactive = !m_options.quiet && ::isatty(STDERR_FILENO);
-    Progress_bar progress_bar(std::cerr, interactive);
+    const Deformation_tool::Progress_display display =
+        m_options.quiet                ? Deformation_tool::Progress_display::NONE
+        : ::isatty(STDERR_FILENO) != 0 ? Deformation_tool::Progress_display::TERMINAL
+                                       : Deformation_tool::Progress_display::LOG;
+    Progress_bar progress_bar(std::cerr, display, STDERR_FILENO);
 
     std::unique_ptr<Deformation> deformation;
     try
