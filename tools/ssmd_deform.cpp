@@ -19,8 +19,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -121,14 +124,15 @@ std::string save_basis_cache(const Deformation& deformation, const std::string& 
   try
   {
     {
+      errno = 0;
       std::ofstream out(temporary, std::ios::binary);
       if(!out)
-        return "cannot create " + temporary;
+        return errno != 0 ? std::strerror(errno) : "the file cannot be created";
       deformation.save_basis(out);
       out.close();
       if(!out)
         throw CGAL::Spectral_deformation_error(CGAL::Spectral_deformation_error::IO_ERROR,
-                                               "write error");
+                                               "write error (disk full?)");
     }
     std::filesystem::rename(temporary, file);
     return std::string();
@@ -139,6 +143,60 @@ std::string save_basis_cache(const Deformation& deformation, const std::string& 
     std::filesystem::remove(temporary, ignored);
     return e.what();
   }
+}
+
+// The folder of the basis caches: $XDG_CACHE_HOME/ssmd, else
+// $HOME/.cache/ssmd; empty when neither variable is usable. The XDG base
+// directory specification says to ignore a relative $XDG_CACHE_HOME.
+std::filesystem::path cache_folder()
+{
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if(xdg != nullptr && std::filesystem::path(xdg).is_absolute())
+    return std::filesystem::path(xdg) / "ssmd";
+  const char* home = std::getenv("HOME");
+  if(home != nullptr && *home != '\0')
+    return std::filesystem::path(home) / ".cache" / "ssmd";
+  return std::filesystem::path();
+}
+
+// 64-bit FNV-1a: the cache name only has to tell meshes apart; a collision
+// is caught by the fingerprint that load_basis() checks.
+struct Fnv1a
+{
+  std::uint64_t state = 14695981039346656037ull;
+
+  void add(const char* data, std::size_t size)
+  {
+    for(std::size_t i = 0; i < size; ++i)
+    {
+      state ^= static_cast<unsigned char>(data[i]);
+      state *= 1099511628211ull;
+    }
+  }
+};
+
+// The name of the cache of a basis in the cache folder: the mesh file name
+// for the reader, and a hash of what the basis depends on (the content of
+// the mesh file, the region of interest, the number of frequencies), so
+// that two meshes, even of the same name, or two regions of one mesh never
+// share a file.
+std::string cache_file_name(const std::string& mesh_file, const std::vector<char>& in_roi,
+                            std::size_t frequencies)
+{
+  Fnv1a hash;
+  std::ifstream in(mesh_file, std::ios::binary);
+  std::vector<char> buffer(1 << 16);
+  while(in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0)
+    hash.add(buffer.data(), static_cast<std::size_t>(in.gcount()));
+  if(in.bad())
+    throw Tool_error("cannot read the mesh " + mesh_file + " again to name its basis cache");
+  hash.add(in_roi.data(), in_roi.size());
+  const std::string m = std::to_string(frequencies);
+  hash.add(m.data(), m.size());
+  std::ostringstream name;
+  name << std::filesystem::path(mesh_file).stem().string() << '-' << std::hex << std::setw(16)
+       << std::setfill('0') << hash.state << std::dec << "-m" << frequencies << ".ssmd-basis";
+  return name.str();
 }
 
 Mesh read_triangle_mesh(const std::string& file)
@@ -348,6 +406,36 @@ private:
     return deformation;
   }
 
+  // The basis cache of this run: --basis-cache, or a file of the cache
+  // folder, which is created if needed. Clears `use_cache` when there is no
+  // usable folder: the run goes on without cache.
+  std::string basis_cache_file(const Deformation_tool::Deformation_constraints& constraints,
+                               bool& use_cache) const
+  {
+    if(!m_options.basis_cache_file.empty())
+      return m_options.basis_cache_file;
+    const std::filesystem::path folder = cache_folder();
+    if(folder.empty())
+    {
+      warn("no cache folder (neither XDG_CACHE_HOME nor HOME is set): the basis is not cached; "
+           "--basis-cache FILE names a cache file");
+      use_cache = false;
+      return std::string();
+    }
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if(error || !std::filesystem::is_directory(folder))
+    {
+      warn("cannot create the cache folder " + folder.string() + " (" +
+           (error ? error.message() : std::string("not a directory")) +
+           "): the basis is not cached; --basis-cache FILE names another cache file");
+      use_cache = false;
+      return std::string();
+    }
+    return (folder / cache_file_name(m_options.mesh_file, constraints.in_roi, m_options.frequencies))
+        .string();
+  }
+
   // Reads the cache into `deformation`; a cache that cannot be used is
   // reported and left to be overwritten.
   template <class Deformation>
@@ -398,11 +486,9 @@ private:
       throw Tool_error(std::string("cannot set up the deformation: ") + e.what());
     }
 
+    bool use_cache = uses_basis && m_options.use_cache;
     const std::string cache_file =
-        m_options.basis_cache_file.empty()
-            ? m_options.mesh_file + ".ssmd-basis-m" + std::to_string(m_options.frequencies)
-            : m_options.basis_cache_file;
-    const bool use_cache = uses_basis && m_options.use_cache;
+        use_cache ? basis_cache_file(constraints, use_cache) : std::string();
     bool loaded = false;
     if constexpr(uses_basis)
       loaded = use_cache && load_cache(*deformation, cache_file);
@@ -452,7 +538,8 @@ private:
           if(failure.empty())
             origin << ", saved to the cache " << cache_file;
           else
-            warn("cannot write the basis cache " + cache_file + ": " + failure);
+            warn("cannot save the basis to the cache " + cache_file + " (" + failure +
+                 "): the run goes on, the next one computes the basis again");
         }
       }
       m_report.basis_origin = origin.str();

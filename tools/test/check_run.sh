@@ -6,18 +6,20 @@
 #   --status success|failure|N   expected exit status (failure: any non-zero)
 #   --expect REGEX               the output must match REGEX (grep -E), repeatable
 #   --reject REGEX               the output must not match REGEX, repeatable
+#   --count REGEX N              exactly N lines of the output match REGEX, repeatable
 #   --absent FILE                FILE must not exist afterwards (removed before the run)
 #   --exists FILE                FILE must exist afterwards (removed before the run)
 #   --remove FILE                FILE is removed before the run
 #   --corrupt FROM TO            TO is a copy of FROM with a byte flipped in the middle
 set -u
 status=success
-expects=() rejects=() absents=() exists=()
+expects=() rejects=() absents=() exists=() counts=()
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do
   case "$1" in
     --status) status="$2"; shift 2 ;;
     --expect) expects+=("$2"); shift 2 ;;
     --reject) rejects+=("$2"); shift 2 ;;
+    --count) counts+=("$2" "$3"); shift 3 ;;
     --absent) absents+=("$2"); rm -f "$2"; shift 2 ;;
     --exists) exists+=("$2"); rm -f "$2"; shift 2 ;;
     --remove) rm -f "$2"; shift 2 ;;
@@ -53,6 +55,12 @@ for regex in "${expects[@]+"${expects[@]}"}"; do
 done
 for regex in "${rejects[@]+"${rejects[@]}"}"; do
   if grep -Eq -- "$regex" <<<"$output"; then echo "FAILED: the output matches: $regex"; failed=1; fi
+done
+set -- "${counts[@]+"${counts[@]}"}"
+while [ $# -gt 0 ]; do
+  found=$(grep -Ec -- "$1" <<<"$output")
+  [ "$found" -eq "$2" ] || { echo "FAILED: $found lines match $1, expected $2"; failed=1; }
+  shift 2
 done
 for file in "${absents[@]+"${absents[@]}"}"; do
   [ ! -e "$file" ] || { echo "FAILED: $file was written"; failed=1; }
