@@ -8,5 +8,6 @@ build="${SSMD_BUILD_DIR:-$root/build}"
 bash "$root/scripts/install_dependencies.sh"
 bash "$root/scripts/build.sh" -DSSMD_BUILD_TESTS=ON -DSSMD_BUILD_EXAMPLES=ON
 bash "$root/scripts/fetch_sample_meshes.sh"   # the examples run on a sample mesh
+bash "$root/scripts/install_python_package.sh"
 cd "$build"
 ctest --output-on-failure --timeout 900 -j "${SSMD_JOBS:-$(nproc)}"

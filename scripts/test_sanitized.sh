@@ -11,7 +11,7 @@ jobs="${SSMD_JOBS:-$(nproc)}"
 bash "$root/scripts/install_dependencies.sh"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSMD_SANITIZE=ON \
   -DSSMD_BUILD_TESTS=ON -DSSMD_BUILD_EXAMPLES=OFF -DSSMD_BUILD_BENCHMARKS=OFF \
-  -DSSMD_BUILD_DOC=OFF -DSSMD_BUILD_TOOLS=OFF -DSSMD_BUILD_FUZZERS=OFF >/dev/null
+  -DSSMD_BUILD_DOC=OFF -DSSMD_BUILD_TOOLS=OFF -DSSMD_BUILD_FUZZERS=OFF -DSSMD_BUILD_PYTHON=OFF >/dev/null
 cmake --build "$build" --parallel "$jobs"
 cd "$build"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1}"
