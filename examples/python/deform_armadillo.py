@@ -53,6 +53,7 @@ def main():
 
     start = time.perf_counter()
     deformation = ssmd.Deformation(V, F, handles=hand, fixed=feet, m=100)
+    basis_seconds = deformation.preprocess_report["basis_seconds"]   # before deform() renews the report
     a = np.radians(-70)
     deformation.rotate([np.cos(a / 2), 0, 0, np.sin(a / 2)], center=[24, 56, 0])   # about z, at the shoulder
     W = deformation.deform(iterations=10)
@@ -62,7 +63,7 @@ def main():
     report = deformation.deform_report
     print("%d vertices, %d handle and %d fixed vertices: deformed in %.2f s "
           "(basis %.2f s, %d iterations); hand moved by %.1f, feet by %g; wrote %s"
-          % (len(V), len(hand), len(feet), seconds, deformation.preprocess_report["basis_seconds"],
+          % (len(V), len(hand), len(feet), seconds, basis_seconds,
              report["iterations"], np.linalg.norm(W[hand] - V[hand], axis=1).max(),
              np.abs(W[feet] - V[feet]).max(), target))
 
