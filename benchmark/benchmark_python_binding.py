@@ -42,36 +42,42 @@ def main():
     args = parser.parse_args()
     os.makedirs(args.work_dir, exist_ok=True)
 
-    line = subprocess.run([args.program, args.case_file, str(args.levels), args.work_dir,
-                           str(args.repetitions), str(args.drags)],
-                          check=True, capture_output=True, text=True).stdout
-    words = shlex.split(line)
-    cpp = dict(zip(words[::2], words[1::2]))
+    def run_cpp():
+        line = subprocess.run([args.program, args.case_file, str(args.levels), args.work_dir, "1",
+                               str(args.drags)], check=True, capture_output=True, text=True).stdout
+        words = shlex.split(line)
+        return dict(zip(words[::2], words[1::2]))
 
     def load(name, dtype, columns=None):
         a = np.fromfile(os.path.join(args.work_dir, name), dtype=dtype)
         return a.reshape(-1, columns) if columns else a
 
-    V, F = load("V.f64", np.float64, 3), load("F.i64", np.int64, 3)
-    roi, handles = load("roi.i64", np.int64), load("handles.i64", np.int64)
-    targets = load("targets.f64", np.float64, 3)
-
-    first, drag = [], []
+    # Rounds alternate the two sides, so that a change of the machine's load
+    # touches both alike.
+    cpp_first, cpp_drag, first, drag, difference = [], [], [], [], 0.0
     for r in range(args.repetitions):
+        cpp = run_cpp()
+        cpp_first.append(float(cpp["first_result"]))
+        cpp_drag.append(float(cpp["drag"]))
+        V, F = load("V.f64", np.float64, 3), load("F.i64", np.int64, 3)
+        roi, handles = load("roi.i64", np.int64), load("handles.i64", np.int64)
+        targets = load("targets.f64", np.float64, 3)
         start = time.perf_counter()
         d = ssmd.Deformation(V, F, roi=roi, handles=handles, m=100)
         d.set_targets(drag_targets(V, handles, targets, args.drags - 1, args.drags))
         W = d.deform(iterations=10, tolerance=1e-4)
         first.append(time.perf_counter() - start)
-    d.reset()
-    for k in range(args.drags):
-        start = time.perf_counter()
-        d.set_targets(drag_targets(V, handles, targets, k, args.drags))
-        W = d.deform(iterations=10, tolerance=1e-4)
-        drag.append(time.perf_counter() - start)
-    difference = np.max(np.abs(W - load("cpp_result.f64", np.float64, 3)))
+        d.reset()
+        drags = []
+        for k in range(args.drags):
+            start = time.perf_counter()
+            d.set_targets(drag_targets(V, handles, targets, k, args.drags))
+            W = d.deform(iterations=10, tolerance=1e-4)
+            drags.append(time.perf_counter() - start)
+        drag.append(statistics.median(drags))
+        difference = max(difference, float(np.max(np.abs(W - load("cpp_result.f64", np.float64, 3)))))
 
-    cpp_first, cpp_drag = float(cpp["first_result"]), float(cpp["drag"])
+    cpp_first, cpp_drag = statistics.median(cpp_first), statistics.median(cpp_drag)
     py_first, py_drag = statistics.median(first), statistics.median(drag)
     table = [
         "| step | C++ (s) | Python (s) | Python / C++ |",
@@ -86,8 +92,9 @@ def main():
         "",
         "- Case: %s, %d Loop subdivision level(s): %d vertices, %d handles, region of %d vertices"
         % (os.path.basename(args.case_file), args.levels, len(V), len(handles), len(roi)),
-        "- Medians of %d first results and %d drags per side, same run; largest difference "
-        "between the two results: %.1e" % (args.repetitions, args.drags, difference),
+        "- %d rounds, each a C++ run then a Python run: a first result and the median of %d drags "
+        "per side; medians over the rounds. Largest difference between the two results: %.1e"
+        % (args.repetitions, args.drags, difference),
         "- Machine: %s, %d cores; %s, flags %s; Python %s, NumPy %s"
         % (cpp["machine"], os.cpu_count(), cpp["compiler"], cpp["flags"], platform.python_version(),
            np.__version__),

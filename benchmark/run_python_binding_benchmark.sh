@@ -11,5 +11,5 @@ bash "$root/scripts/fetch_sample_meshes.sh" >/dev/null
 cmake --build "$build" --target benchmark_python_binding ssmd_python_module -j "$(nproc)" >/dev/null
 PYTHONPATH="$build/python" /usr/bin/python3 "$root/benchmark/benchmark_python_binding.py" \
   "$build/benchmark/benchmark_python_binding" "$root/benchmark/quality/cases/armadillo_arm.case" \
-  "${LEVELS:-1}" "$build/benchmark/python_binding" "${REPETITIONS:-3}" "${DRAGS:-10}" \
+  "${LEVELS:-1}" "$build/benchmark/python_binding" "${ROUNDS:-5}" "${DRAGS:-10}" \
   --output "$root/benchmark/results/python_binding.md"
