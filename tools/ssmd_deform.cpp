@@ -206,8 +206,10 @@ Mesh read_triangle_mesh(const std::string& file)
     throw Tool_error("cannot read the mesh " + file + ": no such file");
   if(std::filesystem::is_directory(file, error))
     throw Tool_error("cannot read the mesh " + file + ": it is a directory");
+  errno = 0;
   if(!std::ifstream(file))
-    throw Tool_error("cannot read the mesh " + file + ": the file cannot be opened");
+    throw Tool_error("cannot read the mesh " + file + ": " +
+                     (errno != 0 ? std::strerror(errno) : "the file cannot be opened"));
   Mesh mesh;
   bool read = false;
   try
@@ -374,6 +376,10 @@ private:
                        directory.string() + " does not exist");
     if(std::filesystem::is_directory(output, error))
       throw Tool_error("cannot write the result to " + output_file + ": it is a directory");
+    // Checked before the work rather than found at the end.
+    if(::access(directory.c_str(), W_OK) != 0)
+      throw Tool_error("cannot write the result to " + output_file + ": the directory " +
+                       directory.string() + " is not writable (" + std::strerror(errno) + ")");
   }
 
   template <class Deformation>
@@ -445,10 +451,12 @@ private:
     if(!std::filesystem::exists(cache_file, error))
       return false;
     const Clock::time_point start = Clock::now();
+    errno = 0;
     std::ifstream in(cache_file, std::ios::binary);
     if(!in)
     {
-      warn("cannot open the basis cache " + cache_file + ": the basis is recomputed");
+      warn("cannot open the basis cache " + cache_file + " (" +
+           (errno != 0 ? std::strerror(errno) : "unknown reason") + "): the basis is recomputed");
       return false;
     }
     try
