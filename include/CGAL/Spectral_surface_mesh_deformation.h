@@ -16,6 +16,7 @@
 #include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Pipeline_selector.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Template_arguments.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 
 #include <CGAL/assertions.h>
@@ -34,6 +35,7 @@
 #include <new>
 #include <ostream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -43,11 +45,15 @@ namespace CGAL {
 /// *Spectral Surface Deformation with Dual Mesh*, behind the API of
 /// `CGAL::Surface_mesh_deformation`.
 ///
-/// A program written for CGAL's class with its default template arguments
-/// compiles when only the class name and the include change, and keeps the
-/// semantics of the region of interest, the control vertices and their
-/// targets. What has no counterpart: CGAL's algorithm tags, weight
-/// calculator, closest rotation traits and `set_sre_arap_alpha()`. What
+/// A program written for CGAL's class compiles when only the class name and
+/// the include change, and keeps the semantics of the region of interest,
+/// the control vertices and their targets. CGAL's algorithm tags are
+/// accepted as `TAG` and select `SPECTRAL_DUAL_LAPLACIAN`; a weight calculator
+/// of CGAL's class is accepted at the position of `ET` (and in the
+/// constructor) and is not used, and so are CGAL's sparse solver traits at
+/// the position of `ST`. What has no counterpart: CGAL's weight
+/// calculators, sparse solver traits, closest rotation traits and SRE-ARAP's `alpha`
+/// (`set_sre_arap_alpha()` is accepted and does nothing). What
 /// differs: the default number of iterations (10 instead of 5) and the
 /// meaning of the tolerance (see `set_tolerance()`).
 ///
@@ -96,27 +102,65 @@ namespace CGAL {
 ///         `[0, num_vertices(tm))`; `Default` means an initialized vertex index map
 /// \tparam HIM a halfedge index map, accepted for compatibility with CGAL's
 ///         class and not used; `Default` as in CGAL
-/// \tparam TAG the algorithm, a `Spectral_deformation_algorithm_tag`
+/// \tparam TAG the algorithm, a value of `Spectral_deformation_algorithm_tag`,
+///         or, for programs written for CGAL's class, a value of CGAL's
+///         `Deformation_algorithm_tag` (`ORIGINAL_ARAP`, `SPOKES_AND_RIMS`,
+///         `SRE_ARAP`), which all select `SPECTRAL_DUAL_LAPLACIAN` (see
+///         `algorithm`); any other value does not compile
 /// \tparam ET a model of `ManifoldHarmonicsEigensolverTraits`; `Default` means
-///         `Block_lanczos_eigensolver_traits<>`
+///         `Block_lanczos_eigensolver_traits<>`, and so does a weight
+///         calculator of CGAL's class (a model of `SurfaceMeshDeformationWeights`,
+///         the parameter at this position in CGAL), which is not used: the
+///         method's operators are the cotangent Laplacian of the manifold
+///         harmonics and the dual mesh Laplacian, whose weights are fixed by
+///         the method
 /// \tparam ST a model of `SparseSPDSolverTraits` for the detail transfer and
 ///         the spatial solver; `Default` means
 ///         `Default_deformation_sparse_spd_solver_traits` for the detail
 ///         transfer and `Default_sparse_spd_solver_traits` for the spatial
-///         solver
-/// \tparam Reserved not used; it keeps `VPM` at the position it has in CGAL's class
+///         solver, and so do CGAL's sparse solver traits (a model of
+///         `SparseLinearAlgebraWithFactorTraits_d` such as `Eigen_solver_traits`,
+///         the parameter at this position in CGAL), which are not used: the
+///         systems here are symmetric positive definite and are factored
+///         through the package's own concept
+/// \tparam Reserved not used, whatever it is (CGAL's closest rotation traits
+///         in programs written for CGAL's class); it keeps `VPM` at the
+///         position it has in CGAL's class
 /// \tparam VPM a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and
 ///         a 3D point as value; `Default` means `boost::property_map<TM, vertex_point_t>::%type`
 template <class TM,
           class VIM = Default,
           class HIM = Default,
-          Spectral_deformation_algorithm_tag TAG = SPECTRAL_DUAL_LAPLACIAN,
+          auto TAG = SPECTRAL_DUAL_LAPLACIAN,
           class ET = Default,
           class ST = Default,
           class Reserved = Default,
           class VPM = Default>
 class Spectral_surface_mesh_deformation
 {
+  typedef Spectral_deformation::internal::Algorithm_of<TAG> Algorithm_argument;
+  typedef Spectral_deformation::internal::Eigensolver_argument<ET, TM, Block_lanczos_eigensolver_traits<>>
+      Eigensolver_argument;
+  typedef Spectral_deformation::internal::Sparse_solver_argument<ST> Sparse_solver_argument;
+
+  static_assert(Algorithm_argument::valid,
+                "Spectral_surface_mesh_deformation: the 4th template argument (TAG) must be a "
+                "Spectral_deformation_algorithm_tag (CGAL::SPECTRAL_DUAL_LAPLACIAN, the default; "
+                "CGAL::SPECTRAL_LINEAR; CGAL::SPATIAL_DUAL_LAPLACIAN) or one of CGAL's "
+                "Deformation_algorithm_tag values (CGAL::ORIGINAL_ARAP, CGAL::SPOKES_AND_RIMS, "
+                "CGAL::SRE_ARAP), which select CGAL::SPECTRAL_DUAL_LAPLACIAN");
+  static_assert(Eigensolver_argument::valid,
+                "Spectral_surface_mesh_deformation: the 5th template argument (ET) must be "
+                "CGAL::Default, a model of ManifoldHarmonicsEigensolverTraits (such as "
+                "CGAL::Block_lanczos_eigensolver_traits<> or CGAL::Spectra_eigensolver_traits<>), "
+                "or a weight calculator of CGAL::Surface_mesh_deformation, which is not used; "
+                "write CGAL::Default");
+  static_assert(Sparse_solver_argument::valid,
+                "Spectral_surface_mesh_deformation: the 6th template argument (ST) must be "
+                "CGAL::Default, a model of SparseSPDSolverTraits (such as "
+                "CGAL::Eigen_sparse_spd_solver_traits), or a sparse solver traits of "
+                "CGAL::Surface_mesh_deformation, which is not used; write CGAL::Default");
+
 public:
   /// \name Types
   /// @{
@@ -132,14 +176,17 @@ public:
   /// The vertex point map type.
   typedef typename Default::Get<VPM, typename boost::property_map<TM, vertex_point_t>::type>::type
       Vertex_point_map;
-  /// The eigensolver traits type.
-  typedef typename Default::Get<ET, Block_lanczos_eigensolver_traits<>>::type Eigensolver_traits;
+  /// The eigensolver traits type: `ET`, or `Block_lanczos_eigensolver_traits<>`
+  /// when `ET` is `Default` or a weight calculator.
+  typedef typename Eigensolver_argument::type Eigensolver_traits;
   /// The sparse solver traits type of the detail transfer.
-  typedef typename Default::Get<ST, Default_deformation_sparse_spd_solver_traits>::type Sparse_solver_traits;
+  typedef typename Default::Get<typename Sparse_solver_argument::type,
+                                Default_deformation_sparse_spd_solver_traits>::type Sparse_solver_traits;
   /// The sparse solver traits type of the spatial solver.
   // The spatial solver's system couples two rings of neighbours, dense
   // enough for a supernodal factor to pay (see benchmark/NOTES.md).
-  typedef typename Default::Get<ST, Default_sparse_spd_solver_traits>::type Spatial_solver_traits;
+  typedef typename Default::Get<typename Sparse_solver_argument::type, Default_sparse_spd_solver_traits>::type
+      Spatial_solver_traits;
   /// The point type.
   typedef typename boost::property_traits<Vertex_point_map>::value_type Point;
   /// The vertex descriptor type.
@@ -154,13 +201,23 @@ private:
   typedef Spectral_deformation::internal::Triangle_arrays Triangle_arrays;
   typedef Spectral_deformation_error Error;
 
-  typedef Spectral_deformation::internal::Pipeline_selector<TAG, Sparse_solver_traits, Spatial_solver_traits>
+  typedef Spectral_deformation::internal::Pipeline_selector<Algorithm_argument::value, Sparse_solver_traits,
+                                                            Spatial_solver_traits>
       Selector;
   typedef typename Selector::type Pipeline;
   static constexpr bool is_spectral = Selector::is_spectral;
   static constexpr const char* out_of_memory = "not enough memory (an allocation failed); nothing was changed";
 
 public:
+  /// The algorithm that `TAG` selects: `TAG` itself when it is a
+  /// `Spectral_deformation_algorithm_tag`, `SPECTRAL_DUAL_LAPLACIAN` when it
+  /// is one of CGAL's tags.
+  static constexpr Spectral_deformation_algorithm_tag algorithm = Algorithm_argument::value;
+  /// Whether `TAG` is one of CGAL's `Deformation_algorithm_tag` values.
+  static constexpr bool is_cgal_algorithm_tag = Algorithm_argument::is_cgal_tag;
+  /// Whether `ET` is a weight calculator of CGAL's class, accepted and not used.
+  static constexpr bool has_unused_weight_calculator = Eigensolver_argument::is_weight_calculator;
+
   /// Whether the algorithm `TAG` works in a basis of manifold harmonics
   /// (`SPECTRAL_DUAL_LAPLACIAN`, `SPECTRAL_LINEAR`). The options of the basis
   /// and of the reduced system (`set_number_of_frequencies()`,
@@ -225,6 +282,23 @@ public:
     : Spectral_surface_mesh_deformation(triangle_mesh, vertex_index_map, hedge_index_map,
                                         get(vertex_point, triangle_mesh))
   {}
+
+  /// Creates a deformation object as the constructor with four arguments does,
+  /// for programs written for CGAL's class, whose constructor takes a weight
+  /// calculator last: `weight_calculator` is not used (see `ET`).
+  /// \tparam WeightCalculator a model of CGAL's `SurfaceMeshDeformationWeights`
+  template <class WeightCalculator,
+            std::enable_if_t<Spectral_deformation::internal::Is_weight_calculator<WeightCalculator, TM>::value,
+                             int> = 0>
+  Spectral_surface_mesh_deformation(Triangle_mesh& triangle_mesh,
+                                    Vertex_index_map vertex_index_map,
+                                    Hedge_index_map hedge_index_map,
+                                    Vertex_point_map vertex_point_map,
+                                    const WeightCalculator& weight_calculator)
+    : Spectral_surface_mesh_deformation(triangle_mesh, vertex_index_map, hedge_index_map, vertex_point_map)
+  {
+    CGAL_USE(weight_calculator);
+  }
 
   /// Not copyable, as in CGAL: the object refers to the mesh it deforms.
   Spectral_surface_mesh_deformation(const Spectral_surface_mesh_deformation&) = delete;
@@ -549,6 +623,11 @@ public:
   /// displacements divided by the diagonal. (CGAL's tolerance is on the
   /// relative change of the ARAP energy instead.)
   void set_tolerance(double tolerance) { m_tolerance = tolerance; }
+
+  /// Accepted for programs written for CGAL's class with `SRE_ARAP`, and
+  /// not used: the method has no bending term to weight; the iteration on the
+  /// smooth mesh already makes neighbouring rotations alike.
+  void set_sre_arap_alpha(double alpha) { CGAL_USE(alpha); }
 
   /// The number of frequencies `m` of the basis (default 100).
   std::size_t number_of_frequencies() const { return m_settings.frequencies; }
