@@ -12,6 +12,7 @@
 #include "ssmd_deform/Rendering.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spectral_deformation/version.h>
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -46,7 +47,7 @@ typedef CGAL::Block_lanczos_eigensolver_traits<> Eigensolver_traits;
 typedef Deformation_tool::Basis_progress_bar<Eigensolver_traits::Progress> Progress_bar;
 
 const char* const program_name = "ssmd_deform";
-const char* const program_version = "0.1.0";
+const char* const program_version = CGAL_SSMD_VERSION_STR;
 
 /// A failure of the run (exit status 1); the message says what and where.
 class Tool_error : public std::runtime_error

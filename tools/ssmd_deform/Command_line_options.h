@@ -150,14 +150,16 @@ inline std::string wrap(const std::string& text, std::size_t width)
 }
 
 // The layout of `--help`: the usage lines first, option names as
-// "-o, --output PATH", and descriptions wrapped to 80 columns. CLI11's own
-// notes (defaults, exclusions) are left out: the descriptions say them in
-// words.
+// "-o, --output PATH", and descriptions wrapped to fit 80 columns. CLI11's
+// own notes (defaults, exclusions) are left out: the descriptions say them
+// in words.
 class Help_formatter : public CLI::Formatter
 {
 public:
   static constexpr std::size_t name_width = 26;
-  static constexpr std::size_t line_width = 80;
+  // One column short of 80: a character in the last column makes some
+  // terminals wrap.
+  static constexpr std::size_t line_width = 79;
 
   Help_formatter() { column_width(name_width); }
 
