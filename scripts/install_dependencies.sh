@@ -8,7 +8,7 @@ set -euo pipefail
 packages=(
   build-essential cmake
   libcgal-dev libeigen3-dev libboost-dev libspectra-dev libsuitesparse-dev libopenblas-dev catch2
-  libcgal-demo doxygen
+  libcgal-demo doxygen libjs-mathjax fonts-mathjax chromium
   f3d xvfb xauth python3-pil python3-matplotlib fonts-dejavu-core
   libopenmesh-dev libcli11-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
