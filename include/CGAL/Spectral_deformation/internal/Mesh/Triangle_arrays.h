@@ -129,9 +129,11 @@ Triangle_arrays extract_triangle_arrays(const TriangleMesh& tm, VertexPointMap v
       throw Error(Error::INVALID_MESH,
                   "the vertex index map is not a bijection onto [0, number of vertices)");
     seen[i] = 1;
+    // By index, as CGAL's RawPoint_3 concept reads points: OpenMesh's own
+    // points (OpenMesh::Vec3d with CGAL_USE_OM_POINTS) have no x().
     const auto& p = get(vpm, v);
     arrays.positions.row(static_cast<Eigen::Index>(i))
-        << CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z());
+        << CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]);
   }
 
   arrays.triangles.resize(static_cast<Eigen::Index>(num_faces(tm)), 3);
