@@ -287,6 +287,11 @@ public:
   /// for programs written for CGAL's class, whose constructor takes a weight
   /// calculator last: `weight_calculator` is not used (see `ET`).
   /// \tparam WeightCalculator a model of CGAL's `SurfaceMeshDeformationWeights`
+  /// \param triangle_mesh the triangulated mesh to deform (see the constructor with four arguments)
+  /// \param vertex_index_map unique vertex indices in `[0, num_vertices(triangle_mesh))`
+  /// \param hedge_index_map unused, for compatibility
+  /// \param vertex_point_map the positions, read and written
+  /// \param weight_calculator not used
   template <class WeightCalculator,
             std::enable_if_t<Spectral_deformation::internal::Is_weight_calculator<WeightCalculator, TM>::value,
                              int> = 0>
