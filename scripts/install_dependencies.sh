@@ -10,7 +10,7 @@ packages=(
   libcgal-dev libeigen3-dev libboost-dev libspectra-dev libsuitesparse-dev libopenblas-dev catch2
   libcgal-demo doxygen libjs-mathjax fonts-mathjax chromium
   f3d xvfb xauth python3-pil python3-matplotlib fonts-dejavu-core
-  libopenmesh-dev libcli11-dev
+  libopenmesh-dev libcli11-dev nlohmann-json3-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
   "$@"
 )
