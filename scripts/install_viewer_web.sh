@@ -15,7 +15,7 @@ if [ $# -lt 1 ]; then
   echo "usage: $0 BUILD_DIR [--test]" >&2
   exit 2
 fi
-prefix="$1/viewer_web"
+prefix="$(realpath -m "$1")/viewer_web"
 packages=("three@$three_version")
 if [ "${2:-}" = "--test" ]; then
   packages+=("puppeteer-core@$puppeteer_version")
