@@ -298,6 +298,13 @@ struct Session::Impl
     const std::array<double, 3> t = finite_numbers<3>(command, "translation", {0, 0, 0});
     std::array<double, 4> q = finite_numbers<4>(command, "rotation", {1, 0, 0, 0});
     const std::array<double, 3> c = finite_numbers<3>(command, "center", handle_centroid);
+    unsigned int iterations = options.iterations_per_drag;
+    if(auto it = command.find("iterations"); it != command.end())
+    {
+      if(!it->is_number_integer() || it->get<long long>() < 1 || it->get<long long>() > 100)
+        throw Request_error("\"iterations\" must be an integer in [1, 100]");
+      iterations = static_cast<unsigned int>(it->get<long long>());
+    }
     const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     if(!(norm > 1e-12) || !std::isfinite(norm))
       throw Request_error("\"rotation\" must be a nonzero quaternion [w, x, y, z]");
@@ -316,7 +323,7 @@ struct Session::Impl
         target[r] = c[r] + R[r][0] * d[0] + R[r][1] * d[1] + R[r][2] * d[2] + t[r];
       deformation->set_target_position(Vertex_index(i), Point(target[0], target[1], target[2]));
     }
-    deformation->deform(options.iterations_per_drag, 0.0);
+    deformation->deform(iterations, 0.0);
     const CGAL::Spectral_deformation_report& report = deformation->deform_report();
     if(!report.success)
       throw Request_error("the deformation failed: " + report.message);

@@ -168,12 +168,15 @@ def main():
         expect_error(ws, '{"type": "drag", "translation": [1, 0]}', "a translation of two numbers")
         expect_error(ws, '{"type": "drag", "translation": ["1", 0, 0]}', "a translation given as strings")
         expect_error(ws, '{"type": "drag", "rotation": [0, 0, 0, 0]}', "a zero quaternion")
+        expect_error(ws, '{"type": "drag", "iterations": 0}', "zero iterations")
+        expect_error(ws, '{"type": "drag", "iterations": 2.5}', "fractional iterations")
 
         radius = (max(rest[1::3]) - min(rest[1::3]))
         t = [0.05 * radius, 0.02 * radius, 0.0]
-        ws.send(json.dumps({"type": "drag", "translation": t, "rotation": [1, 0, 0, 0]}))
+        ws.send(json.dumps({"type": "drag", "translation": t, "rotation": [1, 0, 0, 0], "iterations": 5}))
         reply = ws.reply()
-        check(reply["type"] == "deformed" and reply["count"] == len(region), "the drag is answered with the region")
+        check(reply["type"] == "deformed" and reply["count"] == len(region) and reply["iterations"] >= 1,
+              f"the drag is answered with the region ({reply.get('iterations')} solves)")
         opcode, data = ws.receive()
         check(opcode == 2 and len(data) == 12 * len(region), "its positions follow")
         positions = struct.unpack(f"<{3 * len(region)}f", data)

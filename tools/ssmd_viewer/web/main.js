@@ -252,15 +252,23 @@ function placeGizmo(translation, quaternion) {
   handleObject.quaternion.copy(quaternion);
 }
 
-function sendDrag() {
+// While the handle moves, each drag runs the server's few solves and
+// continues the iteration of the previous one; when it stops, one more drag
+// with more solves lets the shape settle.
+const SETTLE_ITERATIONS = 10;
+let settlePending = false;
+function sendDrag(settle = false) {
   if (!region) return;
+  if (settle) settlePending = true;
   if (inFlight) { dirty = true; return; }
   const t = handleObject.position.clone().sub(center);
   const q = handleObject.quaternion;
+  const command = { type: 'drag', translation: t.toArray(), rotation: [q.w, q.x, q.y, q.z], center: center.toArray() };
+  if (settlePending) command.iterations = SETTLE_ITERATIONS;
   inFlight = true;
-  dirty = false;
+  dirty = settlePending = false;
   sentAt = performance.now();
-  send({ type: 'drag', translation: t.toArray(), rotation: [q.w, q.x, q.y, q.z], center: center.toArray() });
+  send(command);
 }
 
 function snapshot() { return { translation: handleObject.position.clone().sub(center), quaternion: handleObject.quaternion.clone() }; }
@@ -268,14 +276,15 @@ function snapshot() { return { translation: handleObject.position.clone().sub(ce
 gizmo.addEventListener('dragging-changed', (event) => {
   orbit.enabled = !event.value;
   if (event.value) undoStack.push(snapshot());
+  else sendDrag(true);
 });
-gizmo.addEventListener('objectChange', sendDrag);
+gizmo.addEventListener('objectChange', () => sendDrag());
 
 function undo() {
   const state = undoStack.pop();
   if (!state) return;
   placeGizmo(state.translation, state.quaternion);
-  sendDrag();
+  sendDrag(true);
 }
 
 function reset() {
@@ -332,7 +341,7 @@ window.ssmdViewer = {
   drag(translation, quaternion = [0, 0, 0, 1]) {
     placeGizmo(new THREE.Vector3(...translation), new THREE.Quaternion(...quaternion));
     const reply = next('deformed', 'error');
-    sendDrag();
+    sendDrag(true);
     return reply;
   },
   reset() { const reply = next('deformed', 'error'); reset(); return reply; },
