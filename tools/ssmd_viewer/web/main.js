@@ -33,7 +33,6 @@ function resize() {
 }
 window.addEventListener('resize', resize);
 resize();
-renderer.setAnimationLoop(() => { orbit.update(); renderer.render(scene, camera); });
 
 // --- state ---------------------------------------------------------------
 const geometry = new THREE.BufferGeometry();
@@ -50,6 +49,15 @@ const undoStack = [];
 const replyTimes = [];                  // arrival times of recent replies, for updates per second
 const waiters = [];                     // test hook: resolved by the next message of a type
 const stats = { deformMs: 0, serverMs: 0, roundTripMs: 0, updatesPerSecond: 0, replies: 0 };
+
+// Normals are recomputed once per frame, not once per reply: replies may
+// come faster than frames.
+let normalsStale = false;
+renderer.setAnimationLoop(() => {
+  if (normalsStale) { geometry.computeVertexNormals(); normalsStale = false; }
+  orbit.update();
+  renderer.render(scene, camera);
+});
 
 const ws = new WebSocket(`ws://${location.host}/ws`);
 ws.binaryType = 'arraybuffer';
@@ -136,7 +144,7 @@ function applyDeformed(header, buffer) {
     position.array[i + 2] = values[3 * j + 2];
   }
   position.needsUpdate = true;
-  geometry.computeVertexNormals();
+  normalsStale = true;
   const now = performance.now();
   replyTimes.push(now);
   while (replyTimes.length > 0 && replyTimes[0] < now - 1000) replyTimes.shift();
