@@ -13,6 +13,7 @@ Debian's Python has no WebSocket client, hence the minimal one below
 
 import base64
 import json
+import math
 import os
 import re
 import socket
@@ -186,6 +187,22 @@ def main():
         check(handle_error < 1e-3 * radius, f"the handle moved by the translation (error {handle_error:.2e})")
         check(fixed_error < 1e-5 * radius, f"the fixed vertices stayed (error {fixed_error:.2e})")
         check(reply["deform_seconds"] > 0 and reply["server_seconds"] >= reply["deform_seconds"], "timings are reported")
+
+        # A turn by 30 degrees about z around the centroid of the handle.
+        angle = math.radians(30)
+        c = ready["center"]
+        ws.send(json.dumps({"type": "drag", "translation": t, "rotation": [math.cos(angle / 2), 0, 0, math.sin(angle / 2)]}))
+        reply = ws.reply()
+        opcode, data = ws.receive()
+        positions = struct.unpack(f"<{3 * len(region)}f", data)
+        turn_error = 0
+        for v in handle:
+            x, y, z = (rest[3 * v + k] - c[k] for k in range(3))
+            target = (c[0] + math.cos(angle) * x - math.sin(angle) * y + t[0],
+                      c[1] + math.sin(angle) * x + math.cos(angle) * y + t[1], c[2] + z + t[2])
+            turn_error = max(turn_error, max(abs(positions[3 * where[v] + k] - target[k]) for k in range(3)))
+        check(reply["type"] == "deformed" and turn_error < 1e-3 * radius,
+              f"a turned handle lands on its targets (error {turn_error:.2e})")
 
         ws.send('{"type": "reset"}')
         reply = ws.reply()
