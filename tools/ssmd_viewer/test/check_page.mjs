@@ -36,11 +36,24 @@ try {
   // In the default view the armadillo faces the camera: its raised right arm
   // (on the left of the picture) is selected by boxes in normalized device
   // coordinates.
+  // The region first with the mouse, as a user would: shift-drag a box (from
+  // its lower right corner: the panel covers the upper left one).
+  const toPixels = (x, y) => [(x + 1) / 2 * 1200, (1 - y) / 2 * 800];
+  await page.keyboard.down('Shift');
+  await page.mouse.move(...toPixels(-0.12, 0.0));
+  await page.mouse.down();
+  await page.mouse.move(...toPixels(-0.4, 0.3), { steps: 5 });
+  await page.mouse.move(...toPixels(-0.7, 0.65), { steps: 5 });
+  await page.mouse.up();
+  await page.keyboard.up('Shift');
+  const mouseRegion = await page.evaluate(() => window.ssmdViewer.selected('roi').length);
   const counts = await page.evaluate(() => ({
     roi: window.ssmdViewer.selectBox('roi', -0.7, 0.0, -0.12, 0.65),
     fixed: window.ssmdViewer.selectBox('fixed', -0.2, 0.0, -0.12, 0.65),
     handle: window.ssmdViewer.selectBox('handle', -0.7, 0.25, -0.38, 0.65),
   }));
+  check(mouseRegion > 0 && Math.abs(mouseRegion - counts.roi) <= counts.roi / 100,
+        `a shift-drag box selects the region (${mouseRegion} vertices)`);
   check(counts.roi > 0 && counts.fixed > 0 && counts.handle > 0,
         `box selection: ${counts.roi} region, ${counts.fixed} fixed, ${counts.handle} handle vertices`);
   const ready = await page.evaluate(() => window.ssmdViewer.prepare());
@@ -71,6 +84,15 @@ try {
   check(speed.updatesPerSecond > 0, `updates per second while the handle moves: ${speed.updatesPerSecond.toFixed(1)} ` +
         `at ${speed.framesPerSecond.toFixed(1)} frames per second (last drag: deform ${speed.lastDeformMs.toFixed(1)} ms, ` +
         `server ${speed.lastServerMs.toFixed(1)} ms, round trip ${speed.lastRoundTripMs.toFixed(1)} ms)`);
+  const replies = await page.evaluate(() => window.ssmdViewer.stats().replies);
+  await page.click('#reset');
+  await page.waitForFunction((r) => window.ssmdViewer.stats().replies > r, { timeout: 60000 }, replies);
+  const resetMoved = await page.evaluate(() => {
+    const v = window.ssmdViewer, p = v.positions(), r = v.restPositions();
+    return p.filter((x, i) => x !== r[i]).length;
+  });
+  check(resetMoved === 0, 'the Reset button puts the mesh back at rest');
+
   await page.evaluate((t) => window.ssmdViewer.drag(t), t);
   await new Promise((resolve) => setTimeout(resolve, 300));
   await page.screenshot({ path: screenshot });
