@@ -84,6 +84,30 @@ try {
   check(speed.updatesPerSecond > 0, `updates per second while the handle moves: ${speed.updatesPerSecond.toFixed(1)} ` +
         `at ${speed.framesPerSecond.toFixed(1)} frames per second (last drag: deform ${speed.lastDeformMs.toFixed(1)} ms, ` +
         `server ${speed.lastServerMs.toFixed(1)} ms, round trip ${speed.lastRoundTripMs.toFixed(1)} ms)`);
+  // The gizmo dragged with the mouse from its center (which moves the handle
+  // in the view plane), then the Undo button.
+  const handleDistance = () => page.evaluate(() => {
+    const v = window.ssmdViewer, p = v.positions(), r = v.restPositions();
+    return Math.max(...v.selected('handle').map((i) => Math.hypot(p[3 * i] - r[3 * i], p[3 * i + 1] - r[3 * i + 1], p[3 * i + 2] - r[3 * i + 2])));
+  });
+  const waitIdle = async () => {
+    await new Promise((resolve) => setTimeout(resolve, 200));
+    await page.waitForFunction(() => window.ssmdViewer.idle(), { timeout: 60000 });
+  };
+  await page.evaluate(() => window.ssmdViewer.drag([0, 0, 0]));
+  const [gx, gy] = await page.evaluate(() => window.ssmdViewer.gizmoPixel());
+  await page.mouse.move(gx, gy);
+  await page.mouse.down();
+  await page.mouse.move(gx + 40, gy - 60, { steps: 10 });
+  await page.mouse.up();
+  await waitIdle();
+  const dragged = await handleDistance();
+  check(dragged > 0.02 * radius, `a mouse drag of the gizmo moves the handle (by ${(dragged / radius).toFixed(3)} radius)`);
+  await page.click('#undo');
+  await waitIdle();
+  const undone = await handleDistance();
+  check(undone < 1e-3 * radius, `Undo puts the handle back (${(undone / radius).toExponential(2)} radius from rest)`);
+
   const replies = await page.evaluate(() => window.ssmdViewer.stats().replies);
   await page.click('#reset');
   await page.waitForFunction((r) => window.ssmdViewer.stats().replies > r, { timeout: 60000 }, replies);

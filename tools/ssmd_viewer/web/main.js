@@ -359,5 +359,10 @@ window.ssmdViewer = {
   selected: (mode) => indicesOf(selection[mode]),
   region: () => Array.from(region || []),
   radius: () => geometry.boundingSphere.radius,
+  gizmoPixel() {
+    const p = handleObject.position.clone().project(camera), r = renderer.domElement.getBoundingClientRect();
+    return [r.left + (p.x + 1) / 2 * r.width, r.top + (1 - p.y) / 2 * r.height];
+  },
+  idle: () => !inFlight && !dirty,
   stats: () => ({ ...stats }),
 };
