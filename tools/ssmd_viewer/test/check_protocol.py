@@ -158,7 +158,13 @@ def main():
         handle = [i for i in roi if rest[3 * i + 1] > high]
         fixed = [i for i in roi if rest[3 * i + 1] < heights[int(0.63 * n)]]
         ws.send(json.dumps({"type": "select", "roi": roi, "fixed": fixed, "handle": handle}))
-        ready = ws.reply()
+        progress = []
+        ready = ws.json()
+        while ready["type"] == "progress":
+            progress.append(ready)
+            ready = ws.json()
+        check(len(progress) > 0 and progress[-1]["stage"] == "finished" and progress[-1]["fraction"] == 1,
+              f"the basis reports its progress ({len(progress)} messages, the last one {progress[-1]['stage'] if progress else None})")
         check(ready["type"] == "ready", f"a valid selection is prepared ({ready.get('message', '')})")
         if ready["type"] != "ready":
             return 1
