@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The C++ side of the Python binding's cost (run_python_binding_benchmark.sh):
 // writes a case of quality/cases (optionally Loop-subdivided) as raw arrays

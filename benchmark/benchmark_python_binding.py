@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The cost of the Python binding against the C++ call, in the same run.
 
     benchmark_python_binding.py CPP_PROGRAM CASE_FILE LEVELS WORK_DIR [REPETITIONS [DRAGS]] [--output FILE]

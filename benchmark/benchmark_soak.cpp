@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Soak run of a deformation object: many drags with random handle targets
 // on one mesh, with occasional constraint changes and resets, as an
 // interactive session would make them. Checks that every result is finite,

@@ -1,3 +1,5 @@
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Checks the summary written by benchmark_deformation --summary FILE: the
 # timing table of the target case with every peer and phase, and the table of
 # the targets with a verdict on each.

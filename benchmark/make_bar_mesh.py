@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 #
 # Writes the closed triangulated surface of a box bar, the mesh of the case
 # quality/cases/bar_twist.case: a square cross-section of side 1 centred on

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 #
 # Writes the generated meshes of the quality cases that no sample mesh covers:
 #   tube.off   a capped circular cylinder of radius 0.1 along z from 0 to 1

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 #
 # Draws the figures of the deformation benchmark from the data file written by
 # benchmark_deformation (--data):

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Plots the resident memory of a soak run (benchmark_soak --memory-table)
 against the number of drags: plot_soak_memory.py MEMORY.tsv OUTPUT.png"""
 import sys

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds benchmark_basis in Release in the build directory, extracts the two
 # CGAL sample meshes it needs, runs it and writes benchmark/results/basis.md.
 #

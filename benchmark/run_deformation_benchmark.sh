@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Regenerates the deformation benchmark: builds benchmark_deformation in
 # Release, extracts the CGAL sample meshes, generates the bar mesh, runs the
 # benchmark (CGAL ARAP against this package on the Botsch & Sorkine cases when

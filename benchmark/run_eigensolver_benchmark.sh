@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds benchmark_eigensolvers in Release in the build directory, extracts
 # the CGAL sample mesh of the armadillo case, runs it (armadillo Loop-subdivided
 # once and twice, about 104k and 416k vertices, m = 100 and 200, with the

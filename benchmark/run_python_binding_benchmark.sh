@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Python binding against the C++ call on the armadillo arm case, 104k
 # vertices (one Loop subdivision): builds the benchmark program and the Python
 # package in the Release build, writes benchmark/results/python_binding.md.

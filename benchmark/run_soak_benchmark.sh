@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The soak run: 10,000 drags with random targets on the armadillo's arm case
 # Loop-subdivided once (104k vertices), then the plot of its memory. Writes
 # benchmark/results/soak.md, soak_memory.tsv and soak_memory.png. Takes

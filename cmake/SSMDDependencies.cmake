@@ -1,3 +1,5 @@
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Dependencies of the Spectral_surface_mesh_deformation package. Used both by
 # the source tree and by the installed package configuration.
 #

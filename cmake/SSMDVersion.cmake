@@ -1,3 +1,5 @@
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # ssmd_check_version_header(HEADER VERSION): stops the configuration when the
 # version macros of HEADER (CGAL_SSMD_VERSION_MAJOR, _MINOR, _PATCH and _STR)
 # do not name VERSION, the version of project(). Code compiled against the

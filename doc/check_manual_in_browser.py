@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Opens the HTML manual in headless Chromium and checks what a reader sees.
 
     check_manual_in_browser.py CHROMIUM HTML_DIR SCREENSHOT_DIR

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole mesh is the region of interest; two vertices are control
 // vertices: one is moved, the other one stays. The same generic code runs on
 // a Surface_mesh and on a Polyhedron_3 with vertex ids, and both give the same

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Computes the manifold harmonics basis of a mesh once and reuses it:
 //
 // 1. a Manifold_harmonics_basis is computed (with a progress report of the

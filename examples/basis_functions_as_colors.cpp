@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writes manifold harmonics as vertex colours: one PLY file per requested
 // basis function, the mesh coloured blue where the function is negative,
 // white where it vanishes and red where it is positive (the scale is

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Deforms a Polyhedron_3 without vertex ids through property maps of the
 // user's own: the vertex and halfedge indices are stored in std::maps (as in
 // CGAL's Surface_mesh_deformation example with custom property maps), and

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Deforms a mesh given in the format of the Botsch and Sorkine 2008 benchmark:
 // mesh.off, mesh.sel (one status per vertex: 0 fixed, 1 region of interest,
 // 2 handle) and mesh.def (a 4x4 matrix moving the handle), and writes the

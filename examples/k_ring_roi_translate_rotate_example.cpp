@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A region of interest made of the k-ring of a vertex, its 1-ring as control
 // vertices; the targets are translated, then rotated, then deformed again:
 // each deform() continues from the previous result and reuses the basis.

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Low-pass reconstructions of a mesh with its manifold harmonics basis (the
 // paper's Figure 2): the basis of the largest requested frequency count is
 // computed once, then the coordinates are projected onto its first k

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An OpenMesh mesh deformed through CGAL's graph traits for OpenMesh: the
 // whole mesh is the region of interest, the vertex of largest y is moved up by
 // a tenth of the height and the vertex of smallest y stays where it is. The

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the basis cache reader: Manifold_harmonics_basis::load() and
 // Spectral_surface_mesh_deformation::load_basis() on a fixed tiny mesh.
 // Input: one mode byte, then the stream. Mode bit 0 rewrites the trailing

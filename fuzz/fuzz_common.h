@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared by the libFuzzer harnesses and the seed generator: the mesh type,
 // the fixed mesh of the basis cache harness, bitwise comparison of
 // positions, and the property check that aborts with a message.

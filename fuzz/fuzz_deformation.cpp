@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the whole deformation: a small mesh derived from the input (grid,
 // tetrahedron, octahedron, tube or random soup; scaled from 1e-9 to 1e9,
 // jittered, with collapsed, needle, duplicated, quad and isolated elements,

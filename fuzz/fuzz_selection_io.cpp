@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the readers of the .sel/.def deformation format. Input: one byte
 // (with the next one) giving the expected number of vertices of the .sel
 // reader, then the file content, read by both readers.

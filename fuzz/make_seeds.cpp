@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writes the seeds of the basis cache harness with the package's own save
 // functions: `ssmd_fuzz_make_seeds DIR` (DIR is fuzz/corpus/fuzz_basis_io).
 // Seeds start with the harness's mode byte (see fuzz_basis_io.cpp).

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The main job: installs what is missing, builds in Release, fetches CGAL's
 # sample meshes, then
 #  1. deforms the armadillo (its right arm swung down by 70 degrees about the

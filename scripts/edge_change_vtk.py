@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Write a deformed triangle mesh as a legacy VTK file with the per-vertex
 scalar 'edge_change': the largest relative length change |l' - l| / l of the
 edges at the vertex, between the rest mesh and the deformed mesh (same

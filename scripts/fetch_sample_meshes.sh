@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Extracts CGAL's sample meshes (Debian package libcgal-demo) into
 # build/data/meshes (or $SSMD_BUILD_DIR/data/meshes).
 set -euo pipefail

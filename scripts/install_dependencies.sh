@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the Debian 12 packages the package, its tests, examples, benchmarks
 # and documentation need, when they are missing. Uses apt-get as root, or
 # through sudo when available. Extra packages given as arguments (e.g. the

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Makes `python3 -c "import ssmd"` work for the user who runs it: copies the
 # Python package built in build/python/ssmd (or $SSMD_BUILD_DIR) into the
 # user's site-packages of /usr/bin/python3 (~/.local/lib/python3.X/...), which

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Draw the data flow of the package (doc/fig/architecture_data_flow.png):
 the stages of a deformation from the mesh to the written positions, the
 header or folder of each stage, when each stage runs, the spatial pipeline

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Write a deformation selection (.sel) and a handle transformation (.def), the
 format of the Botsch & Sorkine 2008 benchmark, for an OFF mesh from boxes:
 

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The manual's figure of what region of interest, handle and fixed vertices
 mean: CGAL's armadillo with the three sets coloured, before and after the
 handle is moved (deformed with the Python package ssmd).

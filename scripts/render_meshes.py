@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Render meshes headless with f3d (under xvfb-run) and put the pictures side
 by side, each with a caption, in one PNG.
 

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The tests: installs what is missing, builds in Release, runs the Catch2
 # suite, the examples and the documentation check through ctest.
 set -euo pipefail

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The installed CMake package as another project uses it: installs the
 # package to a temporary prefix, then configures, builds and runs the consumer
 # of test/install_consumer once per component combination (none, CHOLMOD,

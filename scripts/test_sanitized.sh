@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Catch2 suite built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (SSMD_SANITIZE=ON), tests only, in build-asan/ (or $SSMD_ASAN_BUILD_DIR).
 # RelWithDebInfo keeps the suite fast enough and the reports readable; any

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The concurrency test built with ThreadSanitizer (SSMD_SANITIZE_THREAD=ON,
 # without OpenMP, whose runtime is not instrumented), in build-tsan/ (or
 # $SSMD_TSAN_BUILD_DIR): deformation objects in parallel threads next to a

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Programs written for CGAL::Surface_mesh_deformation, with CGAL's template
 // arguments, compile after the class name is swapped, and deform exactly as
 // the default instantiation does. The arguments that must not compile are

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Deformation objects used from several threads at once: each object is
 // independent of the others and of anything else the process does, so that
 // the same input, options and thread count give the same bits whether the

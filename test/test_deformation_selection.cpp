@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 #include <CGAL/Spectral_deformation/IO/deformation_selection.h>
 
 #include <catch2/catch.hpp>

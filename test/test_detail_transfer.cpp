@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Detail transfer: the rotations of the smooth mesh, where the smooth mesh is
 // well shaped and where it squeezes a thin feature into a near-curve.
 #include "test_meshes.h"

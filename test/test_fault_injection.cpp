@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Allocation failures at every allocation of preprocess() and deform(): the
 // k-th allocation made inside the two calls fails (malloc returns null, so
 // operator new, Eigen and CHOLMOD all see it), for k = 1, 2, ... until a run

@@ -1,2 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>

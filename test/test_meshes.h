@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small meshes generated in code for the tests: exact, quick to build, and
 // independent of any file on disk.
 #ifndef SSMD_TEST_MESHES_H

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // OpenMesh's meshes through CGAL's graph traits: the same bases and the same
 // deformations as on Surface_mesh and Polyhedron_3.
 //

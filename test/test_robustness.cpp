@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Bad and unusual input for the deformation class: every case gets a clear
 // error or a documented behaviour, leaves the mesh untouched on failure and
 // never produces non-finite coordinates.

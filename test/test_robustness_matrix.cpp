@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The robustness matrix of doc/robustness.md: the rows that the other test
 // files do not cover. Every case asserts a clear error (exception code or
 // report message) or the documented behaviour, the mesh untouched on failure

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_deformation/internal/Deformation/Spatial_dual_laplacian_solver.h>

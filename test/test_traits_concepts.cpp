@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Concept conformance: archetypes of ManifoldHarmonicsEigensolverTraits and
 // SparseSPDSolverTraits have exactly the members their concept pages list
 // (anything else is deleted or absent), so that every class templated on a

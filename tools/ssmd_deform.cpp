@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // ssmd_deform: deforms a triangle mesh given constraints in a .sel/.def pair
 // or in a plain-text constraint file, with a cached manifold harmonics basis.

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A program that includes only the main header and deforms with the default
 // algorithm and traits: its compile time and the libraries it links are what
 // a new user of the package pays. Timed by time_compile.sh.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Compile time of main_header_default_tag.cpp with the flags a consumer of the
 # installed package gets (no tests, no OpenMP unless EXTRA_FLAGS adds it), the
 # median of REPEATS runs, and the shared libraries the program links.

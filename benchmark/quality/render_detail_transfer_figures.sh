@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Renders the figures of the manual's section "Thin features, open sheets and
 # tubes" (doc/fig/thin_feature_armadillo.png, strip_bend.png, tube_twist.png)
 # from two --mesh-output directories of quality_report, one made by a build of

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds quality_report in Release in the build directory, extracts the CGAL
 # sample meshes the case files use, runs it and writes
 # benchmark/results/quality.md.

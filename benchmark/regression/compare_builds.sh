@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs two builds of ssmd_deform on the same inputs and reports the largest
 # coordinate difference of their results, relative to the bounding-box
 # diagonal: a refactoring that must not change results is checked with

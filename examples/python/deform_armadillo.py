@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Lowers the armadillo's right arm by 70 degrees about the shoulder, feet
 fixed, through the Python package ssmd, and writes the result as OFF.
 

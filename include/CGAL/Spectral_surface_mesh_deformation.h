@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // This header is part of the Spectral Surface Mesh Deformation package, which
 // builds on CGAL but is not part of the CGAL library.

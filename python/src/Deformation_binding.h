@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // ssmd.Deformation: a CGAL::Surface_mesh built from NumPy arrays, owned
 // together with the CGAL::Spectral_surface_mesh_deformation that deforms it.

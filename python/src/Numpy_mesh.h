@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // NumPy arrays in, CGAL::Surface_mesh and NumPy arrays out: the checks of
 // the Python module on its array arguments. Every check raises ValueError

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Calls a Python progress callback from the eigensolver, which runs without
 // the GIL. An exception raised by the callback cannot cross the solver: it is

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // ssmd._ssmd: the compiled part of the Python package ssmd (pybind11). The
 // package's __init__.py re-exports it; its docstrings are the user's

@@ -1,3 +1,5 @@
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the component "python" into PREFIX and imports the package from
 # there, with a clean environment: the package installs into a prefix.
 file(REMOVE_RECURSE ${PREFIX})

@@ -1,5 +1,5 @@
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Meshes built in code for the tests of the Python package."""
 
 import numpy as np

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The deformation the Python tests compare against, through the C++ API.
 // Reads from standard input:

@@ -1,5 +1,5 @@
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Tests of the Python package ssmd: agreement with the C++ API, analytic
 spectra, exact handles, clear exceptions, the basis cache, the progress
 callback, the GIL and reference counts."""

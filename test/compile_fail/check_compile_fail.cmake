@@ -1,3 +1,5 @@
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds TARGET in BINARY_DIR and passes when the build fails with every
 # message of the list EXPECTED (separated by '|') in its output: a build that
 # succeeds, or fails for another reason, is a failure of the test.

@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Must not compile: each instantiation below is a mistake a program written
 // for CGAL's class can make, and each must stop at the static_assert that
 // says what to write instead (checked by check_compile_fail.cmake).

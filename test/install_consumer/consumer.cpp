@@ -1,3 +1,5 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Deforms a flat grid with the installed package: one side fixed, the other
 // lifted. Checks the lifted side reached its target, the middle followed,
 // and the program was compiled with the back-ends its build asked for.

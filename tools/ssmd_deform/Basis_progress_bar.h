@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The progress of the eigensolve of the manifold harmonics basis, driven by
 // the progress callback of CGAL::Block_lanczos_eigensolver_traits.

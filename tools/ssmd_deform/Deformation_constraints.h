@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The constraints of the command-line tool ssmd_deform: which vertices form
 // the region of interest, which are handles, and where the handles go. They

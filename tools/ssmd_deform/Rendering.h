@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Pictures of a mesh before and after the deformation, rendered off screen
 // by f3d under xvfb-run. Both pictures use the same camera, framed on the

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs a command with its standard error on a pseudo-terminal of a given
 # size, or on a log file, and checks the progress it prints there.
 #

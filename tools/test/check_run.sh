@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs a command and checks its exit status, its output (standard output and
 # standard error together) and the files it leaves behind.
 #

@@ -1,0 +1,38 @@
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Every source file of the package states its licence, the one of LICENSE,
+# in an SPDX line near its top.
+#   cmake -DSOURCE_DIR=<repository> -P check_licence_headers.cmake
+set(expected "SPDX-License-Identifier: GPL-3.0-or-later")
+if(NOT EXISTS ${SOURCE_DIR}/LICENSE)
+  message(FATAL_ERROR "LICENSE is missing")
+endif()
+set(patterns)
+foreach(folder include test examples tools python benchmark fuzz scripts doc cmake)
+  foreach(extension h cpp py pyi sh cmake js)
+    list(APPEND patterns ${SOURCE_DIR}/${folder}/*.${extension})
+  endforeach()
+  list(APPEND patterns ${SOURCE_DIR}/${folder}/CMakeLists.txt)
+endforeach()
+file(GLOB_RECURSE files LIST_DIRECTORIES false ${patterns})
+list(APPEND files ${SOURCE_DIR}/CMakeLists.txt)
+set(missing)
+set(count 0)
+foreach(file ${files})
+  if(file MATCHES "/node_modules/|/data/")
+    continue()
+  endif()
+  math(EXPR count "${count} + 1")
+  file(STRINGS ${file} head LIMIT_COUNT 6)
+  string(FIND "${head}" "${expected}" at)
+  if(at EQUAL -1)
+    file(RELATIVE_PATH relative ${SOURCE_DIR} ${file})
+    list(APPEND missing ${relative})
+  endif()
+endforeach()
+if(missing)
+  list(JOIN missing "\n  " text)
+  message(FATAL_ERROR "no '${expected}' line in the first lines of:\n  ${text}")
+endif()
+message(STATUS "${count} source files carry the SPDX line of LICENSE")
