@@ -13,6 +13,7 @@
 #include <CGAL/Spectral_deformation/Deformation_reports.h>
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_deformation/version.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Pipeline_selector.h>
