@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the npm packages of the viewer into a build directory (never into
 # the source tree): three.js for the page, and with --test puppeteer-core for
 # the browser test. Versions are pinned so that the page is tested against the

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Starts the browser viewer ssmd_viewer (doc/viewer.md) on a mesh, the
 # armadillo by default: installs what is missing (Debian packages, three.js
 # from npm into the build directory), builds the viewer into build/ (or

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 #include "Viewer_session.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The deformation side of the viewer: loads the mesh and runs one
 // deformation session per WebSocket connection. Kept free of Boost.Beast so
 // that the protocol can be driven without a network, and so that the

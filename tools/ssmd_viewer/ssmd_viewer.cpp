@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // ssmd_viewer: drag a mesh in the browser. A small HTTP + WebSocket server
 // (Boost.Beast, synchronous, one thread per connection) that serves the
 // page and runs one deformation session per WebSocket connection. See

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Browser test of ssmd_viewer: loads the page in headless Chromium, selects
 // a region, a handle and fixed vertices with the page's own box selection,
 // drags the handle, checks the mesh the page shows, measures the updates per

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Protocol test of ssmd_viewer: starts the server on a mesh, sends malformed,
 unknown, out-of-range, non-finite and oversized commands, checks that each
 one is answered with an error and that the same connection then serves a

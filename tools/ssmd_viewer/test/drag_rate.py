@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Measures how many drags a second ssmd_viewer answers without a browser:
 the server's share of the update rate. Selects the upper part of the mesh
 (above the given height quantile, the top 3 % as handle), then sends drags

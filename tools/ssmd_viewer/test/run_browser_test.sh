@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs check_page.mjs against a fresh ssmd_viewer: installs puppeteer-core and
 # three.js into the build directory if needed (scripts/install_viewer_web.sh),
 # starts the server on a free port, runs the test, stops the server.

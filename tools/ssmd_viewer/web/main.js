@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The page of ssmd_viewer: shows the mesh, selects the region of interest,
 // fixed vertices and handle, and sends the gizmo's motion to the server,
 // which answers with the positions of the region (see doc/viewer.md).
