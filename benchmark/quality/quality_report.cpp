@@ -98,6 +98,7 @@ struct Options
   std::string mesh_output_directory; // empty: no mesh is written
   std::vector<std::string> only;     // names of the cases to run; empty: all
   std::size_t frequencies = 100;
+  std::size_t rotation_patches = 0;          // of the spectral algorithms; 0: the full iteration
   unsigned int long_iterations = 1000;      // of the additional runs
   unsigned int arap_large_iterations = 200; // of the additional CGAL runs on large ROIs
   std::size_t large_roi = 20000;
@@ -121,6 +122,7 @@ void print_usage(const char* program)
          ")\n"
       << "  --only a,b,...                run only the cases of these names\n"
       << "  --frequencies m               basis size of the spectral algorithms (default 100)\n"
+      << "  --rotation-patches k          rotation patches of the iteration (default 0: full)\n"
       << "  --long-iterations N           iteration cap of the additional runs made when the\n"
       << "                                default deform() does not converge (default 1000)\n"
       << "  --large-roi N                 ROIs with more vertices are large (default 20000)\n"
@@ -187,6 +189,8 @@ Options parse_options(int argc, char** argv)
       options.only = split(value(), ',');
     else if(argument == "--frequencies")
       options.frequencies = to_positive_int(value(), argument);
+    else if(argument == "--rotation-patches")
+      options.rotation_patches = static_cast<std::size_t>(std::stoul(value()));
     else if(argument == "--long-iterations")
       options.long_iterations = to_positive_int(value(), argument);
     else if(argument == "--large-roi")
@@ -389,6 +393,7 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
   if constexpr(Spectral_deformation<TAG>::has_basis)
   {
     deformation.set_number_of_frequencies(options.frequencies);
+    deformation.set_rotation_patches(options.rotation_patches);
     deformation.set_constraint_policy(policy);
     // This program owns its process: the solvers may change process-wide
     // state (OpenBLAS threads, SuiteSparse's allocator) to run faster.
@@ -686,7 +691,8 @@ void write_report(const std::string& filename, const Options& options, const Run
       << EIGEN_MAJOR_VERSION << "." << EIGEN_MINOR_VERSION << ", Spectra " << SPECTRA_MAJOR_VERSION
       << "." << SPECTRA_MINOR_VERSION << "." << SPECTRA_PATCH_VERSION
       << "; sparse SPD solver of this package: " << sparse_solver() << "\n"
-      << "- Settings: m = " << options.frequencies << ", additional runs `deform("
+      << "- Settings: m = " << options.frequencies << ", rotation patches " << options.rotation_patches
+      << " (0: the full iteration), additional runs `deform("
       << options.long_iterations << ", 1e-4)` (CGAL on ROIs above " << options.large_roi
       << " vertices: " << options.arap_large_iterations
       << "); definitions of the columns at the end\n";

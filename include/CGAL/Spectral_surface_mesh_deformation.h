@@ -706,6 +706,24 @@ public:
       m_region->pipeline.set_single_precision(single);
   }
 
+  /// The number of rotation patches of the iteration (default 0: one
+  /// rotation per dual vertex, the full iteration of the paper).
+  std::size_t rotation_patches() const { return m_settings.rotation_patches; }
+  /// Groups the dual vertices of the region into about `count` patches of
+  /// neighbouring faces that turn by one rotation each in the iterations of
+  /// `deform()`. Each iteration then costs O(m × count) instead of two
+  /// products with the n×m basis, whatever the size of the mesh; only the
+  /// detail transfer and the output stay O(n). 0 restores the full
+  /// iteration. Takes effect at once, the basis and the factorization are
+  /// kept. Does not compile with `SPATIAL_DUAL_LAPLACIAN`.
+  void set_rotation_patches(std::size_t count)
+  {
+    static_assert(is_spectral, "set_rotation_patches(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    m_settings.rotation_patches = count;
+    if(m_region)
+      m_region->pipeline.set_rotation_patches(count);
+  }
+
   /// @}
 
   /// \name Basis cache

@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPECTRAL_DUAL_LAPLACIAN_SOLVER_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPECTRAL_DUAL_LAPLACIAN_SOLVER_H
 
+#include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
@@ -57,6 +58,21 @@ public:
     m_scale = std::sqrt(mass.sum()) *
               (rest.positions.colwise().maxCoeff() - rest.positions.colwise().minCoeff()).norm();
     m_factored = false;
+    build_patches();
+  }
+
+  /// The number of rotation patches of the iteration; 0 (the default) turns
+  /// every dual vertex by its own rotation, the full iteration.
+  std::size_t rotation_patches() const { return m_patch_count; }
+  /// Sets rotation_patches(); an initialized solver groups its dual vertices
+  /// again (the basis and the factorization are kept).
+  void set_rotation_patches(std::size_t count)
+  {
+    if(count == m_patch_count)
+      return;
+    m_patch_count = count;
+    if(m_basis != nullptr)
+      build_patches();
   }
 
   /// Whether the iteration's copy of the basis is stored in float (the
@@ -132,6 +148,12 @@ public:
     const Eigen::MatrixXd constraint_rhs =
         m_weight * m_weight * (m_constrained_rows.transpose() * smooth_targets);
     Eigen::MatrixXd current = coefficients;
+    if(m_patch_count > 0)
+    {
+      iterate_with_patches(constraint_rhs, current, max_iterations, tolerance, report);
+      coefficients = current;
+      return report;
+    }
     Workspace& w = m_workspace;
     multiply(current, w.shape);
     w.normals = m_rest_coordinates.normals;
@@ -168,6 +190,40 @@ public:
   }
 
 private:
+  void build_patches()
+  {
+    if(m_patch_count == 0)
+    {
+      m_patches = Clustered_rotation_rhs();
+      return;
+    }
+    const std::vector<int> patch_of_row =
+        cluster_dual_rows(m_dual, m_dual.centroids(m_smooth_rest), m_patch_count);
+    m_patches.initialize(*m_basis, m_dual, m_rest_coordinates.weights, m_rest_coordinates.coordinates,
+                         m_smooth_rest, patch_of_row);
+  }
+
+  // The iteration of solve() with the rotations of the patches: no step
+  // reads the n×m basis.
+  void iterate_with_patches(const Eigen::MatrixXd& constraint_rhs, Eigen::MatrixXd& current,
+                            int max_iterations, double tolerance, Iteration_report& report) const
+  {
+    typedef Spectral_deformation_error Error;
+    Eigen::MatrixXd rhs;
+    for(int iteration = 0; iteration <= max_iterations; ++iteration)
+    {
+      m_patches.evaluate(current, rhs);
+      rhs += constraint_rhs + m_regularization * current;
+      const Eigen::MatrixXd next = m_cholesky.solve(rhs);
+      if(!next.allFinite())
+        throw Error(Error::SOLVER_FAILURE, "the iteration produced non-finite values");
+      const double step = (next - current).norm() / m_scale;
+      current = next;
+      if(report.stop_after(iteration, step, tolerance))
+        break;
+    }
+  }
+
   void assign_panels()
   {
     if(m_single_precision)
@@ -227,6 +283,8 @@ private:
   Eigen::LLT<Eigen::MatrixXd> m_cholesky;
   bool m_factored = false;
   mutable Workspace m_workspace;
+  std::size_t m_patch_count = 0;
+  Clustered_rotation_rhs m_patches;
 };
 
 } // namespace internal

@@ -36,6 +36,7 @@ struct Spectral_settings
   double weight = 1.0;
   Spectral_constraint_policy policy = EXACT_CONSTRAINTS;
   bool single_precision_basis = false;
+  std::size_t rotation_patches = 0;
 };
 
 /// The steps of the spectral algorithms for one region: the basis, the
@@ -71,6 +72,7 @@ public:
       report.basis_seconds = seconds_since(start);
     }
     m_solver.set_single_precision(settings.single_precision_basis);
+    m_solver.set_rotation_patches(settings.rotation_patches);
     m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays);
     m_detail.set_process_wide_tuning(process_wide_tuning_of(eigensolver));
     m_detail.initialize(region.arrays, m_solver.smooth_rest());
@@ -140,6 +142,7 @@ public:
   void restart() { m_has_solution = false; }
 
   void set_single_precision(bool single) { m_solver.set_single_precision(single); }
+  void set_rotation_patches(std::size_t count) { m_solver.set_rotation_patches(count); }
   const Basis_data& basis() const { return m_basis; }
   std::size_t number_of_frequencies() const { return static_cast<std::size_t>(m_basis.basis.cols()); }
   Eigen::RowVector3d smooth_rest(Eigen::Index i) const { return m_solver.smooth_rest().row(i); }

@@ -1,0 +1,280 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_CLUSTERED_ROTATIONS_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_CLUSTERED_ROTATIONS_H
+
+#include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+
+#include <Eigen/Dense>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+
+/// Groups the rows of `dual` (the dual vertices with three neighbours) into
+/// about `count` patches of neighbouring faces: seeds spread by farthest
+/// point sampling of the face centroids (on a regular subsample of them),
+/// then grown breadth first over the dual graph, so that a patch never jumps
+/// across a gap between two parts of the surface. A part of the surface that
+/// no seed reaches is a patch of its own. Returns the patch of each row,
+/// numbered from 0 without gaps; `count` at least the number of rows gives
+/// every row its own patch.
+inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const Positions& centroids,
+                                          std::size_t count)
+{
+  const std::vector<int>& row_faces = dual.row_faces();
+  const std::size_t rows = row_faces.size();
+  std::vector<int> result(rows, 0);
+  if(count >= rows)
+  {
+    for(std::size_t r = 0; r < rows; ++r)
+      result[r] = static_cast<int>(r);
+    return result;
+  }
+  count = (std::max<std::size_t>)(count, 1);
+  const std::size_t faces = static_cast<std::size_t>(dual.number_of_faces());
+
+  // Farthest point sampling over a regular subsample: the cost stays
+  // count × candidates, whatever the size of the mesh.
+  const std::size_t candidate_count = (std::min)(faces, 32 * count);
+  const std::size_t stride = faces / candidate_count;
+  std::vector<int> candidates(candidate_count);
+  for(std::size_t i = 0; i < candidate_count; ++i)
+    candidates[i] = static_cast<int>(i * stride);
+  std::vector<double> distance(candidate_count, std::numeric_limits<double>::infinity());
+  std::vector<int> seeds;
+  seeds.reserve(count);
+  std::size_t next = 0;
+  for(std::size_t s = 0; s < count; ++s)
+  {
+    const int seed = candidates[next];
+    seeds.push_back(seed);
+    const Eigen::RowVector3d p = centroids.row(seed);
+    double farthest = -1;
+    for(std::size_t i = 0; i < candidate_count; ++i)
+    {
+      distance[i] = (std::min)(distance[i], (centroids.row(candidates[i]) - p).squaredNorm());
+      if(distance[i] > farthest)
+      {
+        farthest = distance[i];
+        next = i;
+      }
+    }
+    if(!(farthest > 0))
+      break;
+  }
+
+  std::vector<int> patch_of_face(faces, -1);
+  std::vector<int> queue;
+  queue.reserve(faces);
+  int patches = 0;
+  for(int seed : seeds)
+    if(patch_of_face[static_cast<std::size_t>(seed)] < 0)
+    {
+      patch_of_face[static_cast<std::size_t>(seed)] = patches++;
+      queue.push_back(seed);
+    }
+  const Triangles& neighbours = dual.neighbours();
+  std::size_t head = 0;
+  auto grow = [&]() {
+    for(; head < queue.size(); ++head)
+    {
+      const int f = queue[head];
+      for(int j = 0; j < 3; ++j)
+      {
+        const int g = neighbours(f, j);
+        if(g >= 0 && patch_of_face[static_cast<std::size_t>(g)] < 0)
+        {
+          patch_of_face[static_cast<std::size_t>(g)] = patch_of_face[static_cast<std::size_t>(f)];
+          queue.push_back(g);
+        }
+      }
+    }
+  };
+  grow();
+  for(std::size_t f = 0; f < faces; ++f)
+    if(patch_of_face[f] < 0)
+    {
+      patch_of_face[f] = patches++;
+      queue.push_back(static_cast<int>(f));
+      grow();
+    }
+
+  // Only the rows carry rotations: number the patches that hold a row.
+  std::vector<int> renumbered(static_cast<std::size_t>(patches), -1);
+  int used = 0;
+  for(std::size_t r = 0; r < rows; ++r)
+  {
+    int& id = renumbered[static_cast<std::size_t>(patch_of_face[static_cast<std::size_t>(row_faces[r])])];
+    if(id < 0)
+      id = used++;
+    result[r] = id;
+  }
+  return result;
+}
+
+/// The right-hand side of the reduced dual Laplacian iteration with one
+/// rotation per patch of dual vertices instead of one per dual vertex.
+///
+/// The full iteration turns each rest coordinate l̄_r to the normal of the
+/// current shape, which needs the whole shape H c at every step. Here the
+/// rows of a patch C turn by one rotation R_C, so the right-hand side
+/// Hᵀ (L̂F)ᵀ [l̄_r R_Cᵀ]_r is Σ_C K_C R_Cᵀ with K_C = Hᵀ (L̂F)ᵀ [l̄_r]_{r∈C}
+/// (m×3, precomputed). R_C is the rotation of the patch's neighbour
+/// triangles (the triangles whose planes give the normals), fitted to their
+/// edges: the covariance Σ e ēᵀ of those edges is linear in the positions,
+/// so it is cᵀ P_C with P_C (m×3) precomputed too. One step then costs
+/// O(m × patches), independent of the size of the mesh. With one patch per
+/// row, R_C takes the rest normal of the row exactly to its current one, and
+/// the iteration is the full one.
+class Clustered_rotation_rhs
+{
+public:
+  /// `basis` n×m, `dual` the dual mesh of the region, `weights` and
+  /// `coordinates` the rest dual coordinates (rows of `dual`), `smooth_rest`
+  /// the rest positions of the iteration, `patch_of_row` from
+  /// `cluster_dual_rows()`.
+  void initialize(const Eigen::MatrixXd& basis, const Dual_mesh_operator& dual,
+                  const Eigen::Matrix<double, Eigen::Dynamic, 3>& weights, const Positions& coordinates,
+                  const Positions& smooth_rest, const std::vector<int>& patch_of_row)
+  {
+    const Eigen::Index m = basis.cols();
+    const int patches =
+        patch_of_row.empty() ? 0 : *std::max_element(patch_of_row.begin(), patch_of_row.end()) + 1;
+    m_patches = patches;
+    m_K.setZero(m, 3 * patches);
+    m_P.setZero(m, 3 * patches);
+    m_rotations.resize(3 * patches, 3);
+    if(patches == 0)
+      return;
+
+    // Rows in the order of their patches.
+    std::vector<int> start(static_cast<std::size_t>(patches) + 1, 0);
+    for(int p : patch_of_row)
+      ++start[static_cast<std::size_t>(p) + 1];
+    for(std::size_t i = 1; i < start.size(); ++i)
+      start[i] += start[i - 1];
+    std::vector<int> rows_by_patch(patch_of_row.size());
+    {
+      std::vector<int> fill(start.begin(), start.end() - 1);
+      for(std::size_t r = 0; r < patch_of_row.size(); ++r)
+        rows_by_patch[static_cast<std::size_t>(fill[static_cast<std::size_t>(patch_of_row[r])]++)] =
+            static_cast<int>(r);
+    }
+
+    const Positions rest_centroids = dual.centroids(smooth_rest);
+    const Triangles& triangles = dual.triangles();
+    const Triangles& neighbours = dual.neighbours();
+    const std::vector<int>& row_faces = dual.row_faces();
+    const Eigen::Index n = basis.rows();
+
+#ifdef _OPENMP
+#pragma omp parallel if(patches > 64)
+#endif
+    {
+      // Per patch, the vertex rows of (L̂F)ᵀ [l̄_r] and of the edge
+      // covariance operator, gathered sparsely before the products with H.
+      Positions load = Positions::Zero(n, 3), edges = Positions::Zero(n, 3);
+      std::vector<char> seen(static_cast<std::size_t>(n), 0);
+      std::vector<int> touched;
+      auto add = [&](Positions& target, int face, const Eigen::RowVector3d& value) {
+        for(int k = 0; k < 3; ++k)
+        {
+          const int v = triangles(face, k);
+          if(!seen[static_cast<std::size_t>(v)])
+          {
+            seen[static_cast<std::size_t>(v)] = 1;
+            touched.push_back(v);
+          }
+          target.row(v) += value / 3.0;
+        }
+      };
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8)
+#endif
+      for(int p = 0; p < patches; ++p)
+      {
+        for(int s = start[static_cast<std::size_t>(p)]; s < start[static_cast<std::size_t>(p) + 1]; ++s)
+        {
+          const int r = rows_by_patch[static_cast<std::size_t>(s)];
+          const int f = row_faces[static_cast<std::size_t>(r)];
+          const Eigen::RowVector3d l = coordinates.row(r);
+          // Row r of L̂F: -1/3 on the face's vertices, w_j/3 on those of its
+          // neighbours (as in Dual_mesh_operator::laplacian_operator()).
+          add(load, f, -l);
+          for(int j = 0; j < 3; ++j)
+          {
+            const int a = neighbours(f, j), b = neighbours(f, (j + 1) % 3);
+            add(load, a, weights(r, j) * l);
+            const Eigen::RowVector3d rest_edge = rest_centroids.row(b) - rest_centroids.row(a);
+            add(edges, b, rest_edge);
+            add(edges, a, -rest_edge);
+          }
+        }
+        Eigen::Matrix<double, Eigen::Dynamic, 3> K = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(m, 3);
+        Eigen::Matrix<double, Eigen::Dynamic, 3> P = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(m, 3);
+        for(int v : touched)
+        {
+          K.noalias() += basis.row(v).transpose() * load.row(v);
+          P.noalias() += basis.row(v).transpose() * edges.row(v);
+          load.row(v).setZero();
+          edges.row(v).setZero();
+          seen[static_cast<std::size_t>(v)] = 0;
+        }
+        touched.clear();
+        m_K.middleCols(3 * p, 3) = K;
+        m_P.middleCols(3 * p, 3) = P;
+      }
+    }
+  }
+
+  int number_of_patches() const { return m_patches; }
+
+  /// `rhs` (m×3) = Σ_C K_C R_Cᵀ for the rotations of the patches at the
+  /// shape H `coefficients`.
+  void evaluate(const Eigen::MatrixXd& coefficients, Eigen::MatrixXd& rhs) const
+  {
+    m_covariances.noalias() = coefficients.transpose() * m_P;
+    for(int p = 0; p < m_patches; ++p)
+      m_rotations.middleRows<3>(3 * p) = rotation_of(m_covariances.middleCols<3>(3 * p)).transpose();
+    rhs.noalias() = m_K * m_rotations;
+  }
+
+private:
+  // The rotation nearest to the covariance Σ e ēᵀ (its polar factor), the
+  // one that best turns the rest edges ē to the current ones e.
+  static Eigen::Matrix3d rotation_of(const Eigen::Matrix3d& covariance)
+  {
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d R = svd.matrixU() * svd.matrixV().transpose();
+    if(R.determinant() < 0)
+    {
+      Eigen::Matrix3d U = svd.matrixU();
+      U.col(2) = -U.col(2);
+      R = U * svd.matrixV().transpose();
+    }
+    return R;
+  }
+
+  int m_patches = 0;
+  Eigen::MatrixXd m_K, m_P;
+  mutable Eigen::Matrix<double, 3, Eigen::Dynamic> m_covariances;
+  mutable Eigen::Matrix<double, Eigen::Dynamic, 3> m_rotations;
+};
+
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_CLUSTERED_ROTATIONS_H
