@@ -10,8 +10,9 @@
 //
 // CGAL's ARAP system is not symmetric (the rows of the constrained vertices
 // are identity rows), so CHOLMOD's Cholesky factorization does not apply to
-// it; its peer here is SuiteSparse's LU, UMFPACK, when it was found at build
-// time, and CGAL's default (Eigen's SparseLU) otherwise.
+// it, and Eigen's UMFPACK wrapper keeps a reference to the matrix, which
+// CGAL's class does not keep alive: CGAL ARAP runs with its default solver,
+// Eigen's SparseLU, which is what its users get.
 //
 // Usage: benchmark_drag --output FILE [--data FILE.tsv] [options], see print_usage().
 
@@ -20,11 +21,6 @@
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Surface_mesh_deformation.h>
 
-#ifdef SSMD_BENCHMARK_HAVE_UMFPACK
-#include <CGAL/Eigen_solver_traits.h>
-#include <Eigen/UmfPackSupport>
-#endif
-
 #include <iostream>
 #include <map>
 
@@ -32,15 +28,9 @@ namespace {
 
 using namespace ssmd_benchmark;
 
-#ifdef SSMD_BENCHMARK_HAVE_UMFPACK
-typedef CGAL::Eigen_solver_traits<Eigen::UmfPackLU<CGAL::Eigen_sparse_matrix<double>::EigenType>> Cgal_solver;
-const char* const cgal_solver_name = "SuiteSparse UMFPACK LU";
-#else
-typedef CGAL::Default Cgal_solver;
 const char* const cgal_solver_name = "Eigen SparseLU (CGAL's default)";
-#endif
 typedef CGAL::Surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL::SPOKES_AND_RIMS,
-                                       CGAL::Default, Cgal_solver>
+                                       CGAL::Default>
     Cgal_arap;
 typedef CGAL::Spectral_surface_mesh_deformation<Mesh> Spectral;
 

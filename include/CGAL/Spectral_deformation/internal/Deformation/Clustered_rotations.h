@@ -7,11 +7,15 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_CLUSTERED_ROTATIONS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_CLUSTERED_ROTATIONS_H
 
+#include <CGAL/Spectral_deformation/internal/Deformation/rigid_fit.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
 #include <Eigen/Dense>
-#include <Eigen/SVD>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include <algorithm>
 #include <cstddef>
@@ -156,6 +160,8 @@ public:
     m_K.setZero(m, 3 * patches);
     m_P.setZero(m, 3 * patches);
     m_rotations.resize(3 * patches, 3);
+    for(int p = 0; p < patches; ++p)
+      m_rotations.middleRows<3>(3 * p).setIdentity();
     if(patches == 0)
       return;
 
@@ -245,31 +251,52 @@ public:
   /// shape H `coefficients`.
   void evaluate(const Eigen::MatrixXd& coefficients, Eigen::MatrixXd& rhs) const
   {
-    m_covariances.noalias() = coefficients.transpose() * m_P;
-    for(int p = 0; p < m_patches; ++p)
-      m_rotations.middleRows<3>(3 * p) = rotation_of(m_covariances.middleCols<3>(3 * p)).transpose();
-    rhs.noalias() = m_K * m_rotations;
+    rhs.setZero(m_K.rows(), 3);
+    int threads = 1;
+#ifdef _OPENMP
+    // The two products read 6 m × patches numbers: worth a team from a few
+    // hundred patches on.
+    if(static_cast<double>(m_patches) * static_cast<double>(m_K.rows()) > 2e4)
+      threads = (std::min)(omp_get_max_threads(), (m_patches + 63) / 64);
+#endif
+    m_partial.resize(static_cast<std::size_t>(threads));
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if(threads > 1)
+#endif
+    {
+      int thread = 0;
+#ifdef _OPENMP
+      thread = omp_get_thread_num();
+#endif
+      const int first = static_cast<int>(static_cast<long>(m_patches) * thread / threads);
+      const int last = static_cast<int>(static_cast<long>(m_patches) * (thread + 1) / threads);
+      evaluate_patches(coefficients, first, last, m_partial[static_cast<std::size_t>(thread)]);
+    }
+    for(const Eigen::MatrixXd& part : m_partial)
+      rhs += part;
   }
 
 private:
-  // The rotation nearest to the covariance Σ e ēᵀ (its polar factor), the
-  // one that best turns the rest edges ē to the current ones e.
-  static Eigen::Matrix3d rotation_of(const Eigen::Matrix3d& covariance)
+  // The rotations of the patches [first, last) and their share of the
+  // right-hand side.
+  void evaluate_patches(const Eigen::MatrixXd& coefficients, int first, int last, Eigen::MatrixXd& rhs) const
   {
-    Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Eigen::Matrix3d R = svd.matrixU() * svd.matrixV().transpose();
-    if(R.determinant() < 0)
+    const Eigen::Index columns = 3 * (last - first);
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> covariances =
+        coefficients.transpose() * m_P.middleCols(3 * first, columns);
+    for(int p = first; p < last; ++p)
     {
-      Eigen::Matrix3d U = svd.matrixU();
-      U.col(2) = -U.col(2);
-      R = U * svd.matrixV().transpose();
+      auto rotation = m_rotations.middleRows<3>(3 * p);
+      // A patch squeezed into a curve (a covariance of rank one) determines
+      // no rotation: it keeps the last one.
+      rotation = nearest_rotation(covariances.middleCols<3>(3 * (p - first)), rotation.transpose()).transpose();
     }
-    return R;
+    rhs.noalias() = m_K.middleCols(3 * first, columns) * m_rotations.middleRows(3 * first, columns);
   }
 
   int m_patches = 0;
   Eigen::MatrixXd m_K, m_P;
-  mutable Eigen::Matrix<double, 3, Eigen::Dynamic> m_covariances;
+  mutable std::vector<Eigen::MatrixXd> m_partial;
   mutable Eigen::Matrix<double, Eigen::Dynamic, 3> m_rotations;
 };
 

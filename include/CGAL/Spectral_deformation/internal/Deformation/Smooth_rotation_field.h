@@ -9,6 +9,8 @@
 
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
+#include <CGAL/Spectral_deformation/internal/Deformation/rigid_fit.h>
+
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCore>
@@ -23,33 +25,6 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
-
-/// The rotation of a 3×3 matrix `C` closest to it in the Frobenius norm
-/// among proper rotations (the Kabsch solution of max tr(Rᵀ C)), from the
-/// eigenvectors of CᵀC: R = u₁v₁ᵀ + u₂v₂ᵀ + (u₁×u₂)(v₁×v₂)ᵀ with uₖ = C vₖ/σₖ.
-/// Needs σ₂ > 0 (C of rank two at least); returns the identity otherwise.
-inline Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& C)
-{
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-  eigen.computeDirect(C.transpose() * C);
-  // Eigenvalues ascending: columns 2 and 1 are the two largest.
-  const Eigen::Vector3d v1 = eigen.eigenvectors().col(2), v2 = eigen.eigenvectors().col(1);
-  Eigen::Vector3d u1 = C * v1;
-  const double s1 = u1.norm();
-  if(!(s1 > 0))
-    return Eigen::Matrix3d::Identity();
-  u1 /= s1;
-  // Gram-Schmidt keeps u₂ orthogonal to u₁ when σ₂ is much smaller than σ₁.
-  Eigen::Vector3d u2 = C * v2;
-  u2 -= u2.dot(u1) * u1;
-  const double s2 = u2.norm();
-  if(!(s2 > 1e-12 * s1))
-    return Eigen::Matrix3d::Identity();
-  u2 /= s2;
-  Eigen::Vector3d w2 = v2 - v2.dot(v1) * v1;
-  w2.normalize();
-  return u1 * v1.transpose() + u2 * w2.transpose() + u1.cross(u2) * v1.cross(w2).transpose();
-}
 
 /// The edges of a triangle mesh around each vertex, with their cotangent
 /// weights w_ij = ½(cot α_ij + cot β_ij), read off the cotangent stiffness
