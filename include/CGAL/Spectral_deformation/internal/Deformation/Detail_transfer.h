@@ -66,6 +66,14 @@ public:
     if(!smooth_rest.allFinite())
       throw Error(Error::SOLVER_FAILURE, "the smooth mesh has non-finite coordinates");
     m_rotations.initialize(m_stiffness, smooth_rest);
+    // Σ_j w_ij ½ R_i (v_i − v_j) = R_i b_i: the half of the right-hand side
+    // that turns with the vertex's own rotation is one product per vertex.
+    const Cotangent_adjacency& a = m_rotations.adjacency();
+    m_own_half.setZero(m_rest.rows(), 3);
+    for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
+      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
+        m_own_half.row(i) += (0.5 * a.weights[static_cast<std::size_t>(s)]) *
+                             (m_rest.row(i) - m_rest.row(a.neighbours[static_cast<std::size_t>(s)]));
 
     m_component = connected_components(detailed.triangles, m_rest.rows(), m_number_of_components);
     m_soft_ready = false;
@@ -130,13 +138,12 @@ public:
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
     {
-      const Eigen::Matrix3d& Ri = R[static_cast<std::size_t>(i)];
-      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      Eigen::Vector3d sum = R[static_cast<std::size_t>(i)] * m_own_half.row(i).transpose();
       for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
       {
         const int j = a.neighbours[static_cast<std::size_t>(s)];
         const Eigen::Vector3d e = (m_rest.row(i) - m_rest.row(j)).transpose();
-        sum.noalias() += (0.5 * a.weights[static_cast<std::size_t>(s)]) * ((Ri + R[static_cast<std::size_t>(j)]) * e);
+        sum.noalias() += (0.5 * a.weights[static_cast<std::size_t>(s)]) * (R[static_cast<std::size_t>(j)] * e);
       }
       rhs.row(i) = sum.transpose();
     }
@@ -205,6 +212,7 @@ public:
 
 private:
   Positions m_rest;
+  Positions m_own_half;
   Eigen::SparseMatrix<double> m_stiffness;
   Smooth_rotation_field m_rotations;
   mutable std::vector<Eigen::Matrix3d> m_rotation_workspace;
