@@ -313,6 +313,20 @@ TEST_CASE("matrix: duplicate and isolated vertices", "[robustness][matrix]")
     REQUIRE(deform_checked(deformation, mesh));
     CHECK(mesh.point(isolated) == before);
   }
+  SECTION("an isolated control vertex among others: its target cannot be met, a clear failure")
+  {
+    Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(6));
+    const Vertex isolated = mesh.add_vertex(Point(0.5, 0.5, 3));
+    Spectral deformation(mesh);
+    select_right_side(deformation, mesh);
+    deformation.insert_control_vertex(isolated);
+    deformation.translate(isolated, Eigen::Vector3d(1, 0, 0));
+    CHECK_FALSE(deform_checked(deformation, mesh)); // the mesh untouched
+    CHECK(deformation.preprocess_report().message.find("control vertex " + std::to_string(isolated.idx()) +
+                                                       " belongs to no face") != std::string::npos);
+    deformation.erase_control_vertex(isolated);
+    CHECK(deform_checked(deformation, mesh));
+  }
   SECTION("an isolated vertex as the only ROI vertex: no face, a clear failure")
   {
     Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(4));
@@ -502,7 +516,7 @@ TEST_CASE("matrix: control vertices outside the ROI, erased, or removed from the
   {
     Surface_mesh garbage = mesh;
     const Vertex removed = garbage.add_vertex(Point(3, 3, 3));
-    garbage.add_vertex(Point(4, 4, 4)); // isolated, after the removed one
+    garbage.add_vertex(Point(-4, 4, 4)); // isolated, after the removed one, outside the selection
     garbage.remove_vertex(removed);
     REQUIRE(garbage.has_garbage());
     Spectral deformation(garbage);

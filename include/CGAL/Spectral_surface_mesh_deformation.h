@@ -939,6 +939,11 @@ private:
       build_region();
     }
     Region& region = *m_region;
+    // A control vertex of no face is not in the region: its target could not
+    // be met. (An isolated ROI vertex without a target just stays put.)
+    for(std::size_t i = 0; i < m_is_control.size(); ++i)
+      if(m_is_control[i] && region.local[i] < 0)
+        throw Error(Error::INVALID_MESH, "control vertex " + std::to_string(i) + " belongs to no face");
     m_preprocess_report.number_of_region_vertices = region.vertices.size();
     if constexpr(is_spectral)
       m_preprocess_report.number_of_frequencies = region.pipeline.number_of_frequencies();
