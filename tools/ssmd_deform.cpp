@@ -394,6 +394,8 @@ private:
     if constexpr(Deformation::has_basis)
     {
       deformation->set_number_of_frequencies(m_options.frequencies);
+      if(m_options.rotation_patches >= 0)
+        deformation->set_rotation_patches(static_cast<std::size_t>(m_options.rotation_patches));
       deformation->set_constraint_weight(m_options.constraint_weight);
       deformation->set_constraint_policy(m_options.policy == Deformation_tool::Policy::EXACT
                                              ? CGAL::EXACT_CONSTRAINTS

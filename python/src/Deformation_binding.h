@@ -94,6 +94,7 @@ struct Deformation_settings
   std::string policy = "exact";
   double constraint_weight = -1; // negative: the library's default
   bool single_precision_basis = false;
+  long long rotation_patches = -1; // negative: the library's default
   std::string basis_cache;       // empty: none
 };
 
@@ -339,6 +340,8 @@ private:
         if(m_settings.constraint_weight >= 0)
           d.set_constraint_weight(m_settings.constraint_weight);
         d.set_single_precision_basis(m_settings.single_precision_basis);
+        if(m_settings.rotation_patches >= 0)
+          d.set_rotation_patches(static_cast<std::size_t>(m_settings.rotation_patches));
       }
       std::vector<Vertex_index> roi_vertices;
       for(std::size_t v = 0; v < m_is_roi.size(); ++v)

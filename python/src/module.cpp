@@ -99,6 +99,8 @@ to roi; the two must not overlap). m: number of manifold harmonics.
 policy: 'exact' (handles land exactly on their targets) or 'soft'.
 algorithm: 'spectral' (default), 'linear' or 'spatial'. constraint_weight:
 weight of the handles in the reduced system (None: the library's default, 1).
+rotation_patches: rotation patches of the iteration (None: the library's
+default; 0: one rotation per dual vertex, the full iteration).
 basis_cache: a file to read the basis from, or to write it to once computed.
 progress: a callable receiving a dict after each step of the eigensolver.
 
@@ -109,7 +111,8 @@ Raises ValueError for every input the library rejects, with its message.
                            const py::handle& roi, const py::handle& fixed, long long m,
                            const std::string& policy, const std::string& algorithm,
                            const py::object& constraint_weight, bool single_precision_basis,
-                           const py::object& basis_cache, const py::object& progress) {
+                           const py::object& rotation_patches, const py::object& basis_cache,
+                           const py::object& progress) {
              Deformation_settings settings;
              if(m < 1)
                throw py::value_error("m (the number of frequencies) must be positive, not " + std::to_string(m));
@@ -124,6 +127,14 @@ Raises ValueError for every input the library rejects, with its message.
                settings.constraint_weight = w;
              }
              settings.single_precision_basis = single_precision_basis;
+             if(!rotation_patches.is_none())
+             {
+               const long long k = rotation_patches.cast<long long>();
+               if(k < 0)
+                 throw py::value_error("rotation_patches must be 0 (the full iteration) or positive, not " +
+                                       std::to_string(k));
+               settings.rotation_patches = k;
+             }
              if(!basis_cache.is_none())
                settings.basis_cache = py::str(py::module_::import("os").attr("fspath")(basis_cache));
              if(!progress.is_none() && !PyCallable_Check(progress.ptr()))
@@ -133,7 +144,8 @@ Raises ValueError for every input the library rejects, with its message.
            py::arg("V"), py::arg("F"), py::kw_only(), py::arg("handles"), py::arg("roi") = py::none(),
            py::arg("fixed") = py::none(), py::arg("m") = 100, py::arg("policy") = "exact",
            py::arg("algorithm") = "spectral", py::arg("constraint_weight") = py::none(),
-           py::arg("single_precision_basis") = false, py::arg("basis_cache") = py::none(),
+           py::arg("single_precision_basis") = false, py::arg("rotation_patches") = py::none(),
+           py::arg("basis_cache") = py::none(),
            py::arg("progress") = py::none())
       .def_property_readonly("number_of_vertices", &Deformation_session::number_of_vertices,
                              "The number of vertices n.")

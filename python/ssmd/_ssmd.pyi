@@ -35,6 +35,7 @@ class Deformation:
         algorithm: str = "spectral",
         constraint_weight: Optional[float] = None,
         single_precision_basis: bool = False,
+        rotation_patches: Optional[int] = None,
         basis_cache: Optional[PathLike] = None,
         progress: Optional[ProgressCallback] = None,
     ) -> None: ...

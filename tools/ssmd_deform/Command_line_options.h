@@ -42,6 +42,7 @@ struct Command_line_options
   Algorithm algorithm = Algorithm::SPECTRAL;
   Policy policy = Policy::EXACT;
   std::size_t frequencies = 100;
+  long long rotation_patches = -1; // negative: the library's default
   unsigned int iterations = 10;
   double tolerance = 1e-4;
   double constraint_weight = 1.0;
@@ -279,6 +280,13 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
       ->option_text("M")
       ->check(internal::expects("--frequencies", "an integer of at least 1", [](const std::string& v) {
         return internal::is_count_at_least(v, 1, static_cast<std::size_t>(-1));
+      }));
+  app.add_option("--rotation-patches", options.rotation_patches,
+                 "rotation patches of the iteration (default: the library's; 0: one rotation per "
+                 "dual vertex, the full iteration).")
+      ->option_text("K")
+      ->check(internal::expects("--rotation-patches", "an integer of at least 0", [](const std::string& v) {
+        return internal::is_count_at_least(v, 0, static_cast<std::size_t>(-1));
       }));
   app.add_option("--iterations", options.iterations,
                  "maximal number of solves of the iteration (default 10, at least 1).")
