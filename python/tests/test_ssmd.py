@@ -59,6 +59,26 @@ def test_same_result_as_the_cpp_api(tube_mesh, algorithm, policy):
     assert np.max(np.abs(W - expected)) <= 1e-12
 
 
+def test_rotation_patches(tube_mesh):
+    """One patch per dual vertex is the full iteration; more patches come closer to it."""
+    V, F, fixed, handles = tube_mesh
+    targets = bent_targets(V, handles)
+
+    def run(patches):
+        d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=30, rotation_patches=patches)
+        d.set_targets(targets)
+        return d.deform(iterations=6, tolerance=0.0)
+
+    full = run(0)
+    diagonal = np.linalg.norm(V.max(axis=0) - V.min(axis=0))
+    assert np.max(np.abs(run(10**9) - full)) <= 1e-9 * diagonal
+    few = np.max(np.linalg.norm(run(20) - full, axis=1))
+    many = np.max(np.linalg.norm(run(400) - full, axis=1))
+    assert 0 < many < few < 0.2 * diagonal
+    expect_value_error("rotation_patches", lambda: ssmd.Deformation(V, F, fixed=fixed, handles=handles,
+                                                                    rotation_patches=-1))
+
+
 def test_exact_handles_and_fixed_vertices(tube_mesh):
     V, F, fixed, handles = tube_mesh
     V_before, F_before = V.copy(), F.copy()
