@@ -114,47 +114,59 @@ public:
   void compute(const Positions& smooth_deformed, std::vector<Eigen::Matrix3d>& rotations) const
   {
     std::vector<Eigen::Matrix3d>& C = m_covariances;
-    accumulate(smooth_deformed, C);
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_adjacency.number_of_vertices());
+    C.resize(static_cast<std::size_t>(n));
+    rotations.resize(static_cast<std::size_t>(n));
+    // One pass: the covariance of each one-ring, and the rotation of the
+    // vertices that do not inherit.
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) if(n > 20000)
+#endif
+    for(std::ptrdiff_t i = 0; i < n; ++i)
+    {
+      C[static_cast<std::size_t>(i)] = covariance(smooth_deformed, static_cast<int>(i));
+      if(!m_inherits[static_cast<std::size_t>(i)])
+        rotations[static_cast<std::size_t>(i)] = nearest_rotation(C[static_cast<std::size_t>(i)]);
+    }
     for(std::size_t k = 0; k < m_order.size(); ++k)
     {
       const int begin = m_parent_start[k], end = m_parent_start[k + 1];
       Eigen::Matrix3d inherited = Eigen::Matrix3d::Zero();
       for(int p = begin; p < end; ++p)
         inherited += C[static_cast<std::size_t>(m_parents[static_cast<std::size_t>(p)])];
-      C[static_cast<std::size_t>(m_order[k])] += inherited / double(end - begin);
+      const std::size_t i = static_cast<std::size_t>(m_order[k]);
+      C[i] += inherited / double(end - begin);
+      rotations[i] = nearest_rotation(C[i]);
     }
-    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(C.size());
-    rotations.resize(C.size());
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n > 20000)
-#endif
-    for(std::ptrdiff_t i = 0; i < n; ++i)
-      rotations[static_cast<std::size_t>(i)] = nearest_rotation(C[static_cast<std::size_t>(i)]);
   }
 
 private:
-  // Per vertex i, Σ_j |w_ij| (x_j − x_i)(s_j − s_i)ᵀ over its one-ring (with
-  // x = s, the rest moment).
+  // covariance() of every vertex.
   void accumulate(const Positions& x, std::vector<Eigen::Matrix3d>& result) const
   {
-    const Cotangent_adjacency& a = m_adjacency;
-    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.number_of_vertices());
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_adjacency.number_of_vertices());
     result.resize(static_cast<std::size_t>(n));
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) if(n > 20000)
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
+      result[static_cast<std::size_t>(i)] = covariance(x, static_cast<int>(i));
+  }
+
+  // Σ_j |w_ij| (x_j − x_i)(s_j − s_i)ᵀ over the one-ring of vertex i (with
+  // x = s, the rest moment).
+  Eigen::Matrix3d covariance(const Positions& x, int i) const
+  {
+    const Cotangent_adjacency& a = m_adjacency;
+    Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+    for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
     {
-      Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
-      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
-      {
-        const int j = a.neighbours[static_cast<std::size_t>(s)];
-        const Eigen::Vector3d e = (m_smooth_rest.row(j) - m_smooth_rest.row(i)).transpose();
-        const Eigen::Vector3d d = (x.row(j) - x.row(i)).transpose();
-        c.noalias() += std::abs(a.weights[static_cast<std::size_t>(s)]) * d * e.transpose();
-      }
-      result[static_cast<std::size_t>(i)] = c;
+      const int j = a.neighbours[static_cast<std::size_t>(s)];
+      const Eigen::Vector3d e = (m_smooth_rest.row(j) - m_smooth_rest.row(i)).transpose();
+      const Eigen::Vector3d d = (x.row(j) - x.row(i)).transpose();
+      c.noalias() += std::abs(a.weights[static_cast<std::size_t>(s)]) * d * e.transpose();
     }
+    return c;
   }
 
   // Breadth-first layers from the determined vertices through the
@@ -199,11 +211,15 @@ private:
       }
       m_parent_start.push_back(static_cast<int>(m_parents.size()));
     }
+    m_inherits.assign(determined.size(), 0);
+    for(int i : m_order)
+      m_inherits[static_cast<std::size_t>(i)] = 1;
   }
 
   Cotangent_adjacency m_adjacency;
   Positions m_smooth_rest;
   std::vector<int> m_order;        // undetermined vertices, breadth-first
+  std::vector<char> m_inherits;    // per vertex: in m_order
   std::vector<int> m_parents;      // their neighbours in the previous layer
   std::vector<int> m_parent_start; // offsets into m_parents, per entry of m_order
   mutable std::vector<Eigen::Matrix3d> m_covariances;
