@@ -3,7 +3,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Builds benchmark_drag in Release, runs it on the armadillo's arm at 26k,
 # 104k, 416k and 1.6M vertices (levels 0-3) and writes
-# benchmark/results/drag.md, drag.tsv and the figure drag_scaling.png.
+# benchmark/results/drag.md, drag.tsv and the manual's figure doc/fig/drag_scaling.png.
 #
 # Usage: benchmark/run_drag_benchmark.sh [options of benchmark_drag]
 #   e.g. --levels 0,1,2      leave out 1.6M (about 20 minutes of the run)
@@ -19,6 +19,6 @@ cmake -S "${repository}" -B "${build_dir}" -DCMAKE_BUILD_TYPE=Release -DSSMD_BUI
 cmake --build "${build_dir}" --target benchmark_drag -j 2
 SSMD_BUILD_DIR="${build_dir}" "${repository}/scripts/fetch_sample_meshes.sh"
 mkdir -p "${results}"
-"${build_dir}/benchmark/benchmark_drag" --levels 0,1,2,3 --meshes "${build_dir}/data/meshes" \
+"${build_dir}/benchmark/benchmark_drag" --levels 0,1,2,3 --patches 300,1000 --cgal-drags 10 --cgal-drags-large 3 --meshes "${build_dir}/data/meshes" \
   --output "${results}/drag.md" --data "${results}/drag.tsv" "$@"
-/usr/bin/python3 "${benchmark_dir}/plot_drag.py" "${results}/drag.tsv" "${results}/drag_scaling.png"
+/usr/bin/python3 "${benchmark_dir}/plot_drag.py" "${results}/drag.tsv" "${repository}/doc/fig/drag_scaling.png"
