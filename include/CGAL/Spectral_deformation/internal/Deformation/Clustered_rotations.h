@@ -185,12 +185,24 @@ public:
     const std::vector<int>& row_faces = dual.row_faces();
     const Eigen::Index n = basis.rows();
 
+    // Per patch, the vertex rows of (L̂F)ᵀ [l̄_r] and of the edge covariance
+    // operator are gathered sparsely; the products with H then run over the
+    // vertices in order, because a row of the column-major n×m basis is m
+    // scattered numbers: read patch by patch, the rows of a large mesh
+    // missed the cache and the TLB at every number.
+    std::vector<std::vector<Contribution>> gathered;
 #ifdef _OPENMP
 #pragma omp parallel if(patches > 64)
 #endif
     {
-      // Per patch, the vertex rows of (L̂F)ᵀ [l̄_r] and of the edge
-      // covariance operator, gathered sparsely before the products with H.
+#ifdef _OPENMP
+#pragma omp single
+      gathered.resize(static_cast<std::size_t>(omp_get_num_threads()));
+      std::vector<Contribution>& mine = gathered[static_cast<std::size_t>(omp_get_thread_num())];
+#else
+      gathered.resize(1);
+      std::vector<Contribution>& mine = gathered[0];
+#endif
       Positions load = Positions::Zero(n, 3), edges = Positions::Zero(n, 3);
       std::vector<char> seen(static_cast<std::size_t>(n), 0);
       std::vector<int> touched;
@@ -228,19 +240,44 @@ public:
             add(edges, a, -rest_edge);
           }
         }
-        Eigen::Matrix<double, Eigen::Dynamic, 3> K = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(m, 3);
-        Eigen::Matrix<double, Eigen::Dynamic, 3> P = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(m, 3);
         for(int v : touched)
         {
-          K.noalias() += basis.row(v).transpose() * load.row(v);
-          P.noalias() += basis.row(v).transpose() * edges.row(v);
+          mine.push_back(Contribution{v, p, load.row(v), edges.row(v)});
           load.row(v).setZero();
           edges.row(v).setZero();
           seen[static_cast<std::size_t>(v)] = 0;
         }
         touched.clear();
-        m_K.middleCols(3 * p, 3) = K;
-        m_P.middleCols(3 * p, 3) = P;
+      }
+    }
+
+    // The contributions in the order of their vertices (a counting sort),
+    // then one pass over the rows of H.
+    std::vector<int> first(static_cast<std::size_t>(n) + 1, 0);
+    for(const std::vector<Contribution>& part : gathered)
+      for(const Contribution& c : part)
+        ++first[static_cast<std::size_t>(c.vertex) + 1];
+    for(std::size_t i = 1; i < first.size(); ++i)
+      first[i] += first[i - 1];
+    std::vector<const Contribution*> by_vertex(static_cast<std::size_t>(first.back()));
+    {
+      std::vector<int> fill(first.begin(), first.end() - 1);
+      for(const std::vector<Contribution>& part : gathered)
+        for(const Contribution& c : part)
+          by_vertex[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.vertex)]++)] = &c;
+    }
+    Eigen::VectorXd h(m);
+    for(Eigen::Index v = 0; v < n; ++v)
+    {
+      const int begin = first[static_cast<std::size_t>(v)], end = first[static_cast<std::size_t>(v) + 1];
+      if(begin == end)
+        continue;
+      h = basis.row(v).transpose();
+      for(int k = begin; k < end; ++k)
+      {
+        const Contribution& c = *by_vertex[static_cast<std::size_t>(k)];
+        m_K.middleCols<3>(3 * c.patch).noalias() += h * c.load;
+        m_P.middleCols<3>(3 * c.patch).noalias() += h * c.edge;
       }
     }
   }
@@ -277,6 +314,14 @@ public:
   }
 
 private:
+  // What the rows of one patch put on one vertex.
+  struct Contribution
+  {
+    int vertex;
+    int patch;
+    Eigen::RowVector3d load, edge;
+  };
+
   // The rotations of the patches [first, last) and their share of the
   // right-hand side.
   void evaluate_patches(const Eigen::MatrixXd& coefficients, int first, int last, Eigen::MatrixXd& rhs) const
