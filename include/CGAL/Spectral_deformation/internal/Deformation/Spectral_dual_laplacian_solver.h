@@ -165,13 +165,7 @@ public:
       m_dual.apply_transpose(m_rest_coordinates.weights, m_negative_heights, w.normals, w.faces,
                              w.vertices);
       multiply_transpose(w.vertices, w.rhs);
-      w.rhs += constraint_rhs + m_regularization * current;
-      const Eigen::MatrixXd next = m_cholesky.solve(w.rhs);
-      if(!next.allFinite())
-        throw Error(Error::SOLVER_FAILURE, "the iteration produced non-finite values");
-      const double step = (next - current).norm() / m_scale;
-      current = next;
-      if(report.stop_after(iteration, step, tolerance))
+      if(take_step(w.rhs, constraint_rhs, current, iteration, tolerance, report))
         break;
       if(iteration < max_iterations)
         multiply(current, w.shape);
@@ -208,20 +202,29 @@ private:
   void iterate_with_patches(const Eigen::MatrixXd& constraint_rhs, Eigen::MatrixXd& current,
                             int max_iterations, double tolerance, Iteration_report& report) const
   {
-    typedef Spectral_deformation_error Error;
     Eigen::MatrixXd rhs;
     for(int iteration = 0; iteration <= max_iterations; ++iteration)
     {
       m_patches.evaluate(current, rhs);
-      rhs += constraint_rhs + m_regularization * current;
-      const Eigen::MatrixXd next = m_cholesky.solve(rhs);
-      if(!next.allFinite())
-        throw Error(Error::SOLVER_FAILURE, "the iteration produced non-finite values");
-      const double step = (next - current).norm() / m_scale;
-      current = next;
-      if(report.stop_after(iteration, step, tolerance))
+      if(take_step(rhs, constraint_rhs, current, iteration, tolerance, report))
         break;
     }
+  }
+
+  // One solve of the iteration from the coordinates' part `rhs` of the
+  // right-hand side: `current` becomes the solution; returns whether the
+  // iteration stops there.
+  bool take_step(Eigen::MatrixXd& rhs, const Eigen::MatrixXd& constraint_rhs, Eigen::MatrixXd& current,
+                 int iteration, double tolerance, Iteration_report& report) const
+  {
+    typedef Spectral_deformation_error Error;
+    rhs += constraint_rhs + m_regularization * current;
+    const Eigen::MatrixXd next = m_cholesky.solve(rhs);
+    if(!next.allFinite())
+      throw Error(Error::SOLVER_FAILURE, "the iteration produced non-finite values");
+    const double step = (next - current).norm() / m_scale;
+    current = next;
+    return report.stop_after(iteration, step, tolerance);
   }
 
   void assign_panels()
