@@ -68,12 +68,18 @@ public:
     m_rotations.initialize(m_stiffness, smooth_rest);
     // Σ_j w_ij ½ R_i (v_i − v_j) = R_i b_i: the half of the right-hand side
     // that turns with the vertex's own rotation is one product per vertex.
+    // The other half turns with the neighbour's rotation: the weighted rest
+    // edges ½ w_ij (v_i − v_j) are stored in the order of the adjacency.
     const Cotangent_adjacency& a = m_rotations.adjacency();
-    m_own_half.setZero(m_rest.rows(), 3);
+    m_own_half.setZero(3, m_rest.rows());
+    m_half_edges.resize(3, static_cast<Eigen::Index>(a.neighbours.size()));
     for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
       for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
-        m_own_half.row(i) += (0.5 * a.weights[static_cast<std::size_t>(s)]) *
-                             (m_rest.row(i) - m_rest.row(a.neighbours[static_cast<std::size_t>(s)]));
+      {
+        m_half_edges.col(s) = (0.5 * a.weights[static_cast<std::size_t>(s)]) *
+                              (m_rest.row(i) - m_rest.row(a.neighbours[static_cast<std::size_t>(s)])).transpose();
+        m_own_half.col(i) += m_half_edges.col(s);
+      }
 
     m_component = connected_components(detailed.triangles, m_rest.rows(), m_number_of_components);
     m_soft_ready = false;
@@ -138,13 +144,9 @@ public:
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
     {
-      Eigen::Vector3d sum = R[static_cast<std::size_t>(i)] * m_own_half.row(i).transpose();
+      Eigen::Vector3d sum = R[static_cast<std::size_t>(i)] * m_own_half.col(i);
       for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
-      {
-        const int j = a.neighbours[static_cast<std::size_t>(s)];
-        const Eigen::Vector3d e = (m_rest.row(i) - m_rest.row(j)).transpose();
-        sum.noalias() += (0.5 * a.weights[static_cast<std::size_t>(s)]) * (R[static_cast<std::size_t>(j)] * e);
-      }
+        sum.noalias() += R[static_cast<std::size_t>(a.neighbours[static_cast<std::size_t>(s)])] * m_half_edges.col(s);
       rhs.row(i) = sum.transpose();
     }
     return rhs;
@@ -212,7 +214,8 @@ public:
 
 private:
   Positions m_rest;
-  Positions m_own_half;
+  // Per vertex Σ_j ½ w_ij (v_i − v_j), per edge of the adjacency ½ w_ij (v_i − v_j).
+  Eigen::Matrix<double, 3, Eigen::Dynamic> m_own_half, m_half_edges;
   Eigen::SparseMatrix<double> m_stiffness;
   Smooth_rotation_field m_rotations;
   mutable std::vector<Eigen::Matrix3d> m_rotation_workspace;

@@ -77,6 +77,9 @@ struct Cotangent_adjacency
 class Smooth_rotation_field
 {
 public:
+  /// Positions one column per vertex.
+  typedef Eigen::Matrix<double, 3, Eigen::Dynamic> Vertex_major_positions;
+
   /// The conditioning below which a one-ring does not determine a rotation:
   /// a squared ratio of the second to the first principal extent of the
   /// smooth one-ring (0.01: extents in a ratio below 1 : 10).
@@ -88,8 +91,17 @@ public:
   void initialize(const Eigen::SparseMatrix<double>& stiffness, const Positions& smooth_rest)
   {
     m_adjacency.initialize(stiffness);
-    m_smooth_rest = smooth_rest;
     const Eigen::Index n = smooth_rest.rows();
+    // The weighted rest edges are read in the order of the adjacency, one
+    // after the other, instead of gathering two rows of the rest positions
+    // per edge.
+    const Cotangent_adjacency& a = m_adjacency;
+    m_weighted_rest_edges.resize(3, static_cast<Eigen::Index>(a.neighbours.size()));
+    for(Eigen::Index i = 0; i < n; ++i)
+      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
+        m_weighted_rest_edges.col(s) =
+            std::abs(a.weights[static_cast<std::size_t>(s)]) *
+            (smooth_rest.row(a.neighbours[static_cast<std::size_t>(s)]) - smooth_rest.row(i)).transpose();
     std::vector<Eigen::Matrix3d> moments;
     accumulate(smooth_rest, moments);
     std::vector<char> determined(static_cast<std::size_t>(n), 0);
@@ -117,16 +129,28 @@ public:
     const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_adjacency.number_of_vertices());
     C.resize(static_cast<std::size_t>(n));
     rotations.resize(static_cast<std::size_t>(n));
+    m_vertex_major.resize(3, n);
     // One pass: the covariance of each one-ring, and the rotation of the
     // vertices that do not inherit.
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n > 20000)
+#pragma omp parallel if(n > 20000)
 #endif
-    for(std::ptrdiff_t i = 0; i < n; ++i)
     {
-      C[static_cast<std::size_t>(i)] = covariance(smooth_deformed, static_cast<int>(i));
-      if(!m_inherits[static_cast<std::size_t>(i)])
-        rotations[static_cast<std::size_t>(i)] = nearest_rotation(C[static_cast<std::size_t>(i)]);
+      // A neighbour's three coordinates in one cache line instead of three.
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+      for(std::ptrdiff_t i = 0; i < n; ++i)
+        m_vertex_major.col(i) = smooth_deformed.row(i).transpose();
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+      for(std::ptrdiff_t i = 0; i < n; ++i)
+      {
+        C[static_cast<std::size_t>(i)] = covariance(m_vertex_major, static_cast<int>(i));
+        if(!m_inherits[static_cast<std::size_t>(i)])
+          rotations[static_cast<std::size_t>(i)] = nearest_rotation(C[static_cast<std::size_t>(i)]);
+      }
     }
     for(std::size_t k = 0; k < m_order.size(); ++k)
     {
@@ -145,26 +169,26 @@ private:
   void accumulate(const Positions& x, std::vector<Eigen::Matrix3d>& result) const
   {
     const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_adjacency.number_of_vertices());
+    const Vertex_major_positions vertex_major = x.transpose();
     result.resize(static_cast<std::size_t>(n));
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) if(n > 20000)
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
-      result[static_cast<std::size_t>(i)] = covariance(x, static_cast<int>(i));
+      result[static_cast<std::size_t>(i)] = covariance(vertex_major, static_cast<int>(i));
   }
 
   // Σ_j |w_ij| (x_j − x_i)(s_j − s_i)ᵀ over the one-ring of vertex i (with
-  // x = s, the rest moment).
-  Eigen::Matrix3d covariance(const Positions& x, int i) const
+  // x = s, the rest moment); x one column per vertex.
+  Eigen::Matrix3d covariance(const Vertex_major_positions& x, int i) const
   {
     const Cotangent_adjacency& a = m_adjacency;
     Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+    const Eigen::Vector3d xi = x.col(i);
     for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
     {
-      const int j = a.neighbours[static_cast<std::size_t>(s)];
-      const Eigen::Vector3d e = (m_smooth_rest.row(j) - m_smooth_rest.row(i)).transpose();
-      const Eigen::Vector3d d = (x.row(j) - x.row(i)).transpose();
-      c.noalias() += std::abs(a.weights[static_cast<std::size_t>(s)]) * d * e.transpose();
+      const Eigen::Vector3d d = x.col(a.neighbours[static_cast<std::size_t>(s)]) - xi;
+      c.noalias() += d * m_weighted_rest_edges.col(s).transpose();
     }
     return c;
   }
@@ -217,7 +241,9 @@ private:
   }
 
   Cotangent_adjacency m_adjacency;
-  Positions m_smooth_rest;
+  // Per edge of the adjacency, |w_ij| (s_j − s_i).
+  Eigen::Matrix<double, 3, Eigen::Dynamic> m_weighted_rest_edges;
+  mutable Vertex_major_positions m_vertex_major;
   std::vector<int> m_order;        // undetermined vertices, breadth-first
   std::vector<char> m_inherits;    // per vertex: in m_order
   std::vector<int> m_parents;      // their neighbours in the previous layer
