@@ -794,3 +794,46 @@ TEST_CASE("rotation patches reproduce a rigid motion of all constraints", "[defo
   const Eigen::MatrixXd expected = before * turn.transpose();
   CHECK((positions_of(mesh) - expected).rowwise().norm().maxCoeff() < 1e-8 * diagonal_of(before));
 }
+
+TEST_CASE("constraint products: rigid parts from per-group moments equal the products with the smooth targets",
+          "[deformation][constraints]")
+{
+  const Eigen::Index n = 60, m = 12;
+  std::srand(7);
+  const internal::Positions rest = internal::Positions::Random(n, 3) * 3.0;
+  const internal::Positions smooth = rest + 0.1 * internal::Positions::Random(n, 3);
+  internal::Constraint_set set;
+  set.constrained = {0, 1, 2, 3, 4, 10, 11, 12, 13, 20, 21, 22, 23, 24};
+  set.number_of_fixed = 5;
+  set.groups = {{0, 1, 2, 3, 4}, {5, 6, 7, 8}, {9, 10, 11, 12, 13}};
+  Eigen::MatrixXd rows = Eigen::MatrixXd::Random(static_cast<Eigen::Index>(set.size()), m);
+  internal::Constraint_products products;
+  products.initialize(set, rows, rest, smooth);
+
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(1.1, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  const Eigen::RowVector3d shift(0.3, -2.0, 1.5);
+  internal::Positions targets(static_cast<Eigen::Index>(set.size()), 3);
+  for(std::size_t k = 0; k < set.size(); ++k)
+  {
+    const Eigen::RowVector3d v = rest.row(set.constrained[k]);
+    if(k < 5) // the fixed ring keeps its rest positions
+      targets.row(static_cast<Eigen::Index>(k)) = v;
+    else if(k < 9) // a handle moved rigidly
+      targets.row(static_cast<Eigen::Index>(k)) = v * turn.transpose() + shift;
+    else // a handle stretched
+      targets.row(static_cast<Eigen::Index>(k)) = v * (1.0 + 0.2 * double(k)) + shift;
+  }
+  const Eigen::MatrixXd expected =
+      rows.transpose() * internal::smooth_targets(set, rest, smooth, targets);
+  const Eigen::MatrixXd computed = products.product(set, rows, targets);
+  INFO("expected\n" << expected << "\ncomputed\n" << computed);
+  CHECK((computed - expected).norm() <= 1e-12 * expected.norm());
+
+  // Changing only the stretched handle's targets changes the product as the
+  // direct one does.
+  targets.row(10) += Eigen::RowVector3d(0.5, 0.25, -1.0);
+  const Eigen::MatrixXd expected2 =
+      rows.transpose() * internal::smooth_targets(set, rest, smooth, targets);
+  CHECK((products.product(set, rows, targets) - expected2).norm() <= 1e-12 * expected2.norm());
+  CHECK((expected2 - expected).norm() > 1e-3 * expected.norm());
+}

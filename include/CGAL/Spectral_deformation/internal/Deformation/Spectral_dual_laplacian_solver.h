@@ -100,6 +100,8 @@ public:
     return result;
   }
   const Eigen::MatrixXd& rest_coefficients() const { return m_rest_coefficients; }
+  /// H_c: the rows of the basis of the constrained vertices of `preprocess()`.
+  const Eigen::MatrixXd& constrained_rows() const { return m_constrained_rows; }
   const Dual_mesh_operator& dual_mesh() const { return m_dual; }
 
   /// Factors Ã for the constrained vertices. Returns false when Ã is not
@@ -141,12 +143,21 @@ public:
   Iteration_report solve(const Positions& smooth_targets, Eigen::MatrixXd& coefficients,
                          int max_iterations, double tolerance) const
   {
+    return solve_with_constraint_products(m_constrained_rows.transpose() * smooth_targets, coefficients,
+                                          max_iterations, tolerance);
+  }
+
+  /// As `solve()`, given the products H_cᵀ y (m×3) of the constrained rows
+  /// of the basis and the smooth targets (see `Constraint_products`).
+  Iteration_report solve_with_constraint_products(const Eigen::MatrixXd& constraint_products,
+                                                  Eigen::MatrixXd& coefficients, int max_iterations,
+                                                  double tolerance) const
+  {
     typedef Spectral_deformation_error Error;
     Iteration_report report;
     if(!m_factored)
       throw Error(Error::SOLVER_FAILURE, "the spectral solver is not preprocessed");
-    const Eigen::MatrixXd constraint_rhs =
-        m_weight * m_weight * (m_constrained_rows.transpose() * smooth_targets);
+    const Eigen::MatrixXd constraint_rhs = m_weight * m_weight * constraint_products;
     Eigen::MatrixXd current = coefficients;
     if(m_patch_count > 0)
     {

@@ -12,6 +12,7 @@
 #include <CGAL/Spectral_deformation/Deformation_reports.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Constraint_products.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
@@ -86,6 +87,8 @@ public:
     typedef Spectral_deformation_error Error;
     if(!m_solver.preprocess(set.constrained, settings.weight))
       throw Error(Error::SOLVER_FAILURE, "the reduced system is not positive definite");
+    m_constraint_products.initialize(set, m_solver.constrained_rows(), region.arrays.positions,
+                                     m_solver.smooth_rest());
     m_policy = settings.policy;
     bool factored = false;
     if(m_policy == EXACT_CONSTRAINTS)
@@ -110,11 +113,10 @@ public:
   {
     CGAL_precondition(targets.rows() == static_cast<Eigen::Index>(set.size()));
     const auto start = std::chrono::steady_clock::now();
-    const Positions& rest = region.arrays.positions;
-    const Positions smooth = smooth_targets(set, rest, m_solver.smooth_rest(), targets);
+    const Eigen::MatrixXd products = m_constraint_products.product(set, m_solver.constrained_rows(), targets);
     m_pending = (m_has_solution && Iterated) ? m_coefficients : m_solver.rest_coefficients();
-    const Iteration_report iteration =
-        m_solver.solve(smooth, m_pending, Iterated ? static_cast<int>(iterations) - 1 : 0, tolerance);
+    const Iteration_report iteration = m_solver.solve_with_constraint_products(
+        products, m_pending, Iterated ? static_cast<int>(iterations) - 1 : 0, tolerance);
     report.iterations = static_cast<unsigned int>(iteration.iterations + 1);
     report.last_step = iteration.last_step;
     report.converged = iteration.converged;
@@ -204,6 +206,7 @@ private:
 
   Basis_data m_basis;
   Spectral_dual_laplacian_solver m_solver;
+  Constraint_products m_constraint_products;
   Detail_transfer<SparseSPDSolverTraits> m_detail;
   Spectral_constraint_policy m_policy = EXACT_CONSTRAINTS;
   Eigen::MatrixXd m_coefficients, m_pending;
