@@ -157,7 +157,8 @@ struct Session::Impl
                {"vertices", n},
                {"faces", f},
                {"frequencies", options.frequencies},
-               {"iterations_per_drag", options.iterations_per_drag}});
+               {"iterations_per_drag", options.iterations_per_drag},
+               {"rotation_patches", options.rotation_patches}});
     send_binary(std::move(data));
   }
 
@@ -227,6 +228,7 @@ struct Session::Impl
     {
       deformation.reset(new Deformation(mesh));
       deformation->set_number_of_frequencies(options.frequencies);
+      deformation->set_rotation_patches(options.rotation_patches);
       Eigensolver_traits eigensolver;
       eigensolver.set_progress_callback([this](const Eigensolver_traits::Progress& p) { report_progress(p); });
       deformation->set_eigensolver_traits(eigensolver);

@@ -36,6 +36,9 @@ struct Session_options
   // Solves per drag: deform() continues the iteration of the previous drag,
   // so a few solves per update converge while the handle moves.
   unsigned int iterations_per_drag = 2;
+  // Rotation patches of the iteration (0: one rotation per dual vertex);
+  // see set_rotation_patches() of the deformation class.
+  std::size_t rotation_patches = 1000;
 };
 
 // A message to the page: JSON text, or binary data announced by the JSON

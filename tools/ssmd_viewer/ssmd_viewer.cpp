@@ -236,6 +236,10 @@ int main(int argc, char** argv)
                  "solves per drag (each drag continues the iteration of the previous one)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
+  app.add_option("--rotation-patches", options.session.rotation_patches,
+                 "rotations of the iteration fitted per patch of about 1/K of the region (0: per dual vertex)")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t(0), std::size_t(100000000)));
   app.add_option("--max-message", options.max_message_bytes, "largest command accepted, in bytes")
       ->capture_default_str();
   app.add_option("--web-dir", options.web_dir, "folder of index.html and main.js")->capture_default_str();
