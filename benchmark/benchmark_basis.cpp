@@ -344,11 +344,11 @@ Case_result run_case(const Mesh& mesh, int m, int repetitions, int cheap_repetit
   Eigen::VectorXd mass;
   for(int run = 1; run <= cheap_repetitions; ++run)
   {
-    SD::Triangle_arrays arrays;
+    SD::Mesh::Triangle_arrays arrays;
     Eigen::SparseMatrix<double> Q;
     Eigen::VectorXd M;
     result.assembly.values.push_back(seconds_of([&] {
-      arrays = SD::extract_triangle_arrays(mesh, CGAL::parameters::default_values());
+      arrays = SD::Mesh::extract_triangle_arrays(mesh, CGAL::parameters::default_values());
       Q = SD::cotangent_stiffness(arrays, true);
       M = SD::lumped_mass(arrays);
     }));
@@ -359,12 +359,12 @@ Case_result run_case(const Mesh& mesh, int m, int repetitions, int cheap_repetit
 
   // Factorization of Q - sigma M alone, with the shift that the eigensolver
   // traits use (the cost hardly depends on its value).
-  const Eigen::SparseMatrix<double> shifted = SD::shifted_stiffness(
-      stiffness, mass, SD::shift_invert_shift(mass));
+  const Eigen::SparseMatrix<double> shifted = SD::Eigensolvers::shifted_stiffness(
+      stiffness, mass, SD::Eigensolvers::shift_invert_shift(mass));
   for(int run = 1; run <= cheap_repetitions; ++run)
   {
     CGAL::Default_sparse_spd_solver_traits solver;
-    SD::set_process_wide_tuning_if_supported(solver, true);
+    SD::Memory::set_process_wide_tuning_if_supported(solver, true);
     bool factored = false;
     result.factorization.values.push_back(
         seconds_of([&] { factored = solver.factor(shifted); }));

@@ -905,7 +905,7 @@ void measure_anatomy(Deformation& d, const Deformation_case& c, int repetitions,
   Row_result& row = bundle.add("anatomy");
   std::stringstream cache;
   d.save_basis(cache);
-  const SD::Basis_data data = SD::read_basis(cache);
+  const SD::Basis::Basis_data data = SD::Basis::read_basis(cache);
   const Eigen::MatrixXd& H = data.basis;
   const Eigen::Index n = H.rows(), m = H.cols();
   row.values["n"] = static_cast<double>(n);
@@ -920,17 +920,17 @@ void measure_anatomy(Deformation& d, const Deformation_case& c, int repetitions,
     sink += r(0, 0);
   });
   time_into(row, "pass_HY", repetitions, [&] {
-    const SD::Positions r = H * Y;
+    const SD::Mesh::Positions r = H * Y;
     sink += r(0, 0);
   });
   // A pure read of H (the sum of its entries): the streaming bandwidth.
   time_into(row, "read_H", repetitions, [&] { sink += H.sum(); });
   // The same two products with the panel layout of the package's solver
   // (internal::Basis_panels), in double (what the iteration uses) and float.
-  const SD::Basis_panels<double> panels(H);
+  const SD::Linear_algebra::Basis_panels<double> panels(H);
   {
-    const SD::Basis_panels<float> panels_float(H);
-    SD::Positions S;
+    const SD::Linear_algebra::Basis_panels<float> panels_float(H);
+    SD::Mesh::Positions S;
     Eigen::MatrixXd P;
     time_into(row, "panel_HY", repetitions, [&] { panels.multiply(Y, S); sink += S(0, 0); });
     time_into(row, "panel_HtX", repetitions, [&] { panels.multiply_transpose(X, P); sink += P(0, 0); });
@@ -941,15 +941,15 @@ void measure_anatomy(Deformation& d, const Deformation_case& c, int repetitions,
 
   // The internal solver on the same region and basis.
   const Region_arrays region = region_arrays(c);
-  row.values["fingerprint_matches"] = (SD::fingerprint(region.arrays) == data.fingerprint) ? 1.0 : 0.0;
-  if(SD::fingerprint(region.arrays) != data.fingerprint || region.arrays.positions.rows() != n)
+  row.values["fingerprint_matches"] = (SD::Mesh::fingerprint(region.arrays) == data.fingerprint) ? 1.0 : 0.0;
+  if(SD::Mesh::fingerprint(region.arrays) != data.fingerprint || region.arrays.positions.rows() != n)
     throw std::runtime_error("anatomy: the region rebuilt here is not the region of the class");
-  SD::Spectral_dual_laplacian_solver solver;
+  SD::Deformation::Spectral_dual_laplacian_solver solver;
   solver.initialize(H, data.mass, region.arrays);
   if(!solver.preprocess(region.constrained, 1.0))
     throw std::runtime_error("anatomy: the reduced system is not positive definite");
-  const SD::Positions& smooth = solver.smooth_rest();
-  SD::Positions smooth_targets(static_cast<Eigen::Index>(region.constrained.size()), 3);
+  const SD::Mesh::Positions& smooth = solver.smooth_rest();
+  SD::Mesh::Positions smooth_targets(static_cast<Eigen::Index>(region.constrained.size()), 3);
   const Eigen::Matrix3d R = c.transformation.topLeftCorner<3, 3>();
   const Eigen::Vector3d t = c.transformation.topRightCorner<3, 1>();
   for(std::size_t k = 0; k < region.constrained.size(); ++k)
@@ -971,14 +971,14 @@ void measure_anatomy(Deformation& d, const Deformation_case& c, int repetitions,
 
   // The steps of one iteration, at the state after 10 solves, with the
   // kernels of the solver.
-  const SD::Dual_mesh_operator& dual = solver.dual_mesh();
-  const SD::Dual_coordinates rest = dual.evaluate(smooth);
+  const SD::Mesh::Dual_mesh_operator& dual = solver.dual_mesh();
+  const SD::Mesh::Dual_coordinates rest = dual.evaluate(smooth);
   const Eigen::VectorXd negative_heights = -rest.heights;
-  SD::Positions shape;
+  SD::Mesh::Positions shape;
   time_into(row, "step_shape", repetitions, [&] { panels.multiply(coefficients, shape); });
-  SD::Positions centroids, normals = rest.normals;
+  SD::Mesh::Positions centroids, normals = rest.normals;
   time_into(row, "step_dual", repetitions, [&] { dual.update_normals(shape, centroids, normals); });
-  SD::Positions faces, spread;
+  SD::Mesh::Positions faces, spread;
   time_into(row, "step_sparse", repetitions,
             [&] { dual.apply_transpose(rest.weights, negative_heights, normals, faces, spread); });
   Eigen::MatrixXd projected;
@@ -991,15 +991,15 @@ void measure_anatomy(Deformation& d, const Deformation_case& c, int repetitions,
   row.values["dual_rows"] = static_cast<double>(dual.number_of_rows());
 
   // The detail transfer of the exact policy, taken apart.
-  SD::Detail_transfer<CGAL::Default_sparse_spd_solver_traits> transfer;
+  SD::Deformation::Detail_transfer<CGAL::Default_sparse_spd_solver_traits> transfer;
   transfer.initialize(region.arrays, smooth);
   std::vector<char> prescribed(static_cast<std::size_t>(n), 0);
   for(int i : region.constrained)
     prescribed[static_cast<std::size_t>(i)] = 1;
   if(!transfer.prepare_dirichlet(prescribed))
     throw std::runtime_error("anatomy: the detail transfer factorization failed");
-  SD::Positions prescribed_positions = region.arrays.positions;
-  SD::Positions result;
+  SD::Mesh::Positions prescribed_positions = region.arrays.positions;
+  SD::Mesh::Positions result;
   time_into(row, "transfer_shape", repetitions, [&] { panels.multiply(coefficients, shape); });
   time_into(row, "transfer_rhs", repetitions, [&] {
     const Eigen::MatrixXd rhs = transfer.right_hand_side(shape);
@@ -1130,7 +1130,7 @@ void run_figure5(const Deformation_case& c, const Case_geometry& g, const Plan& 
   if(std::find(solves.begin(), solves.end(), largest) == solves.end())
     solves.push_back(largest);
   std::sort(solves.begin(), solves.end());
-  SD::Basis_data data;
+  SD::Basis::Basis_data data;
   for(int m : solves)
   {
     Row_result& row = bundle.add("figure5_eigensolve_" + std::to_string(m));
@@ -1149,20 +1149,20 @@ void run_figure5(const Deformation_case& c, const Case_geometry& g, const Plan& 
     {
       std::stringstream cache;
       d.save_basis(cache);
-      data = SD::read_basis(cache);
+      data = SD::Basis::read_basis(cache);
     }
   }
   for(int m : frequencies)
   {
-    SD::Basis_data truncated;
+    SD::Basis::Basis_data truncated;
     truncated.eigenvalues = data.eigenvalues.head(m);
     truncated.basis = data.basis.leftCols(m);
     truncated.mass = data.mass;
     truncated.number_of_faces = data.number_of_faces;
     truncated.fingerprint = data.fingerprint;
     std::stringstream cache;
-    SD::write_basis(cache, truncated);
-    truncated = SD::Basis_data();
+    SD::Basis::write_basis(cache, truncated);
+    truncated = SD::Basis::Basis_data();
 
     Deformation d(mesh);
     select_vertices(d, c);

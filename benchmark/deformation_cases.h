@@ -49,8 +49,8 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef CGAL::Spectral_deformation::internal::Positions Positions;
-typedef CGAL::Spectral_deformation::internal::Triangle_arrays Triangle_arrays;
+typedef CGAL::Spectral_deformation::internal::Mesh::Positions Positions;
+typedef CGAL::Spectral_deformation::internal::Mesh::Triangle_arrays Triangle_arrays;
 typedef CGAL::IO::Deformation_vertex_status Status;
 typedef std::chrono::steady_clock Clock;
 
@@ -417,7 +417,7 @@ inline Case_geometry case_geometry(const Deformation_case& c)
   g.diagonal = (g.rest.colwise().maxCoeff() - g.rest.colwise().minCoeff()).norm();
   try
   {
-    g.arrays = CGAL::Spectral_deformation::internal::extract_triangle_arrays(
+    g.arrays = CGAL::Spectral_deformation::internal::Mesh::extract_triangle_arrays(
         mesh, CGAL::parameters::default_values());
   }
   catch(const std::exception& e)
@@ -507,7 +507,7 @@ inline Quality measure(const Case_geometry& g, const Positions& x)
   q.max_outside_displacement = outside / g.diagonal;
 
   if(g.arrays_error.empty())
-    q.arap_energy = CGAL::Spectral_deformation::internal::arap_energy(g.arrays, x);
+    q.arap_energy = CGAL::Spectral_deformation::internal::Deformation::arap_energy(g.arrays, x);
 
   std::vector<double> change(g.moving_edges.size());
   for(std::size_t k = 0; k < g.moving_edges.size(); ++k)

@@ -102,7 +102,7 @@ inline void fix_basis_checksum(std::string& bytes)
 {
   if(bytes.size() < sizeof(std::uint64_t))
     return;
-  CGAL::Spectral_deformation::internal::Checksummed_stream sum;
+  CGAL::Spectral_deformation::internal::Basis::Checksummed_stream sum;
   const std::size_t payload = bytes.size() - sizeof(std::uint64_t);
   sum.add(bytes.data(), payload);
   const std::uint64_t value = sum.value();

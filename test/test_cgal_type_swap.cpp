@@ -148,14 +148,14 @@ TEST_CASE("type swap: a weight calculator at the position of ET is not used", "[
 {
   typedef CGAL::Weights::Cotangent_weight<Surface_mesh> Cotangent;            // CGAL's default for ORIGINAL_ARAP, SRE_ARAP
   typedef CGAL::Weights::Single_cotangent_weight<Surface_mesh> Half_cotangent; // for SPOKES_AND_RIMS
-  static_assert(internal::Is_weight_calculator<Cotangent, Surface_mesh>::value);
-  static_assert(internal::Is_weight_calculator<Half_cotangent, Surface_mesh>::value);
-  static_assert(internal::Is_weight_calculator<Uniform_weight, Surface_mesh>::value);
-  static_assert(internal::Is_weight_calculator<Weight_from_value, Surface_mesh>::value);
+  static_assert(internal::Deformation::Is_weight_calculator<Cotangent, Surface_mesh>::value);
+  static_assert(internal::Deformation::Is_weight_calculator<Half_cotangent, Surface_mesh>::value);
+  static_assert(internal::Deformation::Is_weight_calculator<Uniform_weight, Surface_mesh>::value);
+  static_assert(internal::Deformation::Is_weight_calculator<Weight_from_value, Surface_mesh>::value);
   // Eigensolver traits are not mistaken for weight calculators, nor the reverse.
-  static_assert(!internal::Is_weight_calculator<CGAL::Block_lanczos_eigensolver_traits<>, Surface_mesh>::value);
-  static_assert(!internal::Is_eigensolver_traits<Cotangent>::value);
-  static_assert(internal::Is_eigensolver_traits<CGAL::Spectra_eigensolver_traits<>>::value);
+  static_assert(!internal::Deformation::Is_weight_calculator<CGAL::Block_lanczos_eigensolver_traits<>, Surface_mesh>::value);
+  static_assert(!internal::Deformation::Is_eigensolver_traits<Cotangent>::value);
+  static_assert(internal::Deformation::Is_eigensolver_traits<CGAL::Spectra_eigensolver_traits<>>::value);
 
   typedef Swapped<CGAL::SPOKES_AND_RIMS, Half_cotangent> With_default_weights;
   static_assert(With_default_weights::has_unused_weight_calculator);
@@ -176,7 +176,7 @@ TEST_CASE("type swap: CGAL's sparse solver and closest rotation traits are accep
   typedef Swapped<CGAL::SPOKES_AND_RIMS, CGAL::Default, Cgal_sparse_solver,
                   CGAL::Deformation_Eigen_polar_closest_rotation_traits_3>
       With_cgal_solvers;
-  static_assert(internal::Sparse_solver_argument<Cgal_sparse_solver>::is_cgal_solver_traits);
+  static_assert(internal::Deformation::Sparse_solver_argument<Cgal_sparse_solver>::is_cgal_solver_traits);
   static_assert(std::is_same<With_cgal_solvers::Sparse_solver_traits, Reference::Sparse_solver_traits>::value);
   static_assert(std::is_same<With_cgal_solvers::Spatial_solver_traits, Reference::Spatial_solver_traits>::value);
   // The package's own sparse solver traits at that position are used.

@@ -145,7 +145,7 @@ TEST_CASE("nearest rotation: the Kabsch solution, reflections and rank two inclu
       const Eigen::Vector3d d(normal(random), normal(random), normal(random));
       C = a * c.transpose() + b * d.transpose();
     }
-    const Eigen::Matrix3d R = internal::nearest_rotation(C);
+    const Eigen::Matrix3d R = internal::Deformation::nearest_rotation(C);
     CHECK((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() < 1e-10);
     CHECK(std::abs(R.determinant() - 1.0) < 1e-10);
     // Optimal: tr(Rᵀ C) as large as for the SVD solution.
@@ -154,7 +154,7 @@ TEST_CASE("nearest rotation: the Kabsch solution, reflections and rank two inclu
   // A rotated symmetric positive definite matrix gives back the rotation.
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   const Eigen::Matrix3d spd = Eigen::Vector3d(3.0, 1.0, 0.0).asDiagonal();
-  CHECK((internal::nearest_rotation(turn * spd) - turn).norm() < 1e-12);
+  CHECK((internal::Deformation::nearest_rotation(turn * spd) - turn).norm() < 1e-12);
 }
 
 TEST_CASE("smooth rotation field: a one-ring squeezed into a line inherits the rotation around it",
@@ -163,27 +163,27 @@ TEST_CASE("smooth rotation field: a one-ring squeezed into a line inherits the r
   // A flat grid whose right half is squeezed to the line y = 0, z = 0 in the
   // smooth rest shape; the smooth deformed shape is a rigid rotation of it.
   const Soup grid = bumpy_plane(16, 0.0);
-  internal::Triangles triangles(static_cast<Eigen::Index>(grid.triangles.size()), 3);
+  internal::Mesh::Triangles triangles(static_cast<Eigen::Index>(grid.triangles.size()), 3);
   for(std::size_t f = 0; f < grid.triangles.size(); ++f)
     for(int k = 0; k < 3; ++k)
       triangles(static_cast<Eigen::Index>(f), k) = static_cast<int>(grid.triangles[f][static_cast<std::size_t>(k)]);
-  internal::Positions rest(static_cast<Eigen::Index>(grid.points.size()), 3);
+  internal::Mesh::Positions rest(static_cast<Eigen::Index>(grid.points.size()), 3);
   for(std::size_t i = 0; i < grid.points.size(); ++i)
   {
     const Point& p = grid.points[i];
     rest.row(static_cast<Eigen::Index>(i)) << p.x(), (p.x() > 0.5 ? 1e-9 * p.y() : p.y()), p.z();
   }
-  internal::Triangle_arrays detailed;
+  internal::Mesh::Triangle_arrays detailed;
   detailed.triangles = triangles;
   detailed.positions.resize(rest.rows(), 3);
   for(std::size_t i = 0; i < grid.points.size(); ++i)
     detailed.positions.row(static_cast<Eigen::Index>(i)) << grid.points[i].x(), grid.points[i].y(), grid.points[i].z();
-  internal::Smooth_rotation_field field;
+  internal::Deformation::Smooth_rotation_field field;
   field.initialize(internal::cotangent_stiffness(detailed), rest);
   CHECK(field.number_of_undetermined_vertices() > 100);
 
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(1.2, Eigen::Vector3d(0.3, -1, 0.5).normalized()).toRotationMatrix();
-  const internal::Positions deformed = (rest * turn.transpose()).rowwise() + Eigen::RowVector3d(1, 2, 3);
+  const internal::Mesh::Positions deformed = (rest * turn.transpose()).rowwise() + Eigen::RowVector3d(1, 2, 3);
   std::vector<Eigen::Matrix3d> rotations;
   field.compute(deformed, rotations);
   double worst = 0;
@@ -225,7 +225,7 @@ TEST_CASE("detail transfer: a thin feature squeezed into a curve by the smooth m
   // features) and carries round-off noise. A rigid motion of the smooth mesh
   // must move the details rigidly, the spike included.
   const Surface_mesh mesh = spiky_sphere(2);
-  internal::Triangle_arrays detailed;
+  internal::Mesh::Triangle_arrays detailed;
   detailed.positions.resize(static_cast<Eigen::Index>(num_vertices(mesh)), 3);
   detailed.triangles.resize(static_cast<Eigen::Index>(num_faces(mesh)), 3);
   for(Vertex v : vertices(mesh))
@@ -240,7 +240,7 @@ TEST_CASE("detail transfer: a thin feature squeezed into a curve by the smooth m
   }
   std::mt19937 random(3);
   std::uniform_real_distribution<double> noise(-1e-10, 1e-10);
-  internal::Positions smooth_rest = detailed.positions;
+  internal::Mesh::Positions smooth_rest = detailed.positions;
   std::size_t squeezed = 0;
   for(Eigen::Index i = 0; i < smooth_rest.rows(); ++i)
   {
@@ -257,19 +257,19 @@ TEST_CASE("detail transfer: a thin feature squeezed into a curve by the smooth m
 
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -0.4, 0.2).normalized()).toRotationMatrix();
   const Eigen::RowVector3d shift(0.3, -0.2, 0.5);
-  internal::Positions smooth_deformed = (smooth_rest * turn.transpose()).rowwise() + shift;
+  internal::Mesh::Positions smooth_deformed = (smooth_rest * turn.transpose()).rowwise() + shift;
   for(Eigen::Index i = 0; i < smooth_deformed.rows(); ++i)
     for(int c = 0; c < 3; ++c)
       smooth_deformed(i, c) += noise(random);
-  const internal::Positions expected = (detailed.positions * turn.transpose()).rowwise() + shift;
+  const internal::Mesh::Positions expected = (detailed.positions * turn.transpose()).rowwise() + shift;
 
   std::vector<char> prescribed(static_cast<std::size_t>(detailed.positions.rows()), 0);
   for(Eigen::Index i = 0; i < detailed.positions.rows(); ++i)
     prescribed[static_cast<std::size_t>(i)] = detailed.positions(i, 2) < -0.8;
-  internal::Detail_transfer<> transfer;
+  internal::Deformation::Detail_transfer<> transfer;
   transfer.initialize(detailed, smooth_rest);
   REQUIRE(transfer.prepare_dirichlet(prescribed));
-  internal::Positions result;
+  internal::Mesh::Positions result;
   REQUIRE(transfer.transfer_exact(smooth_deformed, expected, result));
   CHECK((result - expected).rowwise().norm().maxCoeff() < 1e-6);
 }

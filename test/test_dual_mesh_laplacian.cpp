@@ -25,9 +25,9 @@ Positions rigidly_moved(const Positions& x, double scale)
 }
 
 /// The triangles of a soup as the internal arrays.
-CGAL::Spectral_deformation::internal::Triangles dual_triangles(const Soup& soup)
+CGAL::Spectral_deformation::internal::Mesh::Triangles dual_triangles(const Soup& soup)
 {
-  CGAL::Spectral_deformation::internal::Triangles triangles(static_cast<Eigen::Index>(soup.triangles.size()), 3);
+  CGAL::Spectral_deformation::internal::Mesh::Triangles triangles(static_cast<Eigen::Index>(soup.triangles.size()), 3);
   for(std::size_t f = 0; f < soup.triangles.size(); ++f)
     for(int k = 0; k < 3; ++k)
       triangles(static_cast<Eigen::Index>(f), k) = static_cast<int>(soup.triangles[f][static_cast<std::size_t>(k)]);
@@ -160,11 +160,11 @@ TEST_CASE("Surface_mesh and Polyhedron_3 give the same dual coordinates", "[dual
 
 TEST_CASE("non-manifold and inconsistently oriented faces are refused", "[dual][errors]")
 {
-  using CGAL::Spectral_deformation::internal::Dual_mesh_operator;
-  CGAL::Spectral_deformation::internal::Triangles three_on_an_edge(3, 3);
+  using CGAL::Spectral_deformation::internal::Mesh::Dual_mesh_operator;
+  CGAL::Spectral_deformation::internal::Mesh::Triangles three_on_an_edge(3, 3);
   three_on_an_edge << 0, 1, 2, 1, 0, 3, 1, 0, 4;
   CHECK_THROWS_AS(Dual_mesh_operator(three_on_an_edge, 5), Error);
-  CGAL::Spectral_deformation::internal::Triangles flipped(2, 3);
+  CGAL::Spectral_deformation::internal::Mesh::Triangles flipped(2, 3);
   flipped << 0, 1, 2, 0, 1, 3;
   CHECK_THROWS_AS(Dual_mesh_operator(flipped, 4), Error);
   Surface_mesh quad;
@@ -176,7 +176,8 @@ TEST_CASE("non-manifold and inconsistently oriented faces are refused", "[dual][
 
 TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's products", "[dual]")
 {
-  using namespace CGAL::Spectral_deformation::internal;
+  using namespace CGAL::Spectral_deformation::internal::Mesh;
+  using CGAL::Spectral_deformation::internal::Linear_algebra::Basis_panels;
   // A plane with an open border: rows only where a face has three neighbours.
   const Soup soup = bumpy_plane(12);
   const Dual_mesh_operator op(dual_triangles(soup), static_cast<Eigen::Index>(soup.points.size()));

@@ -172,7 +172,7 @@ TEST_CASE("block Lanczos, Spectra and the dense solver agree", "[basis][block_la
   Eigen::VectorXd dense_values, block_values, spectra_values;
   Eigen::MatrixXd dense_vectors, block_vectors, spectra_vectors;
   std::string message;
-  REQUIRE(CGAL::Spectral_deformation::internal::dense_generalized_eigenpairs(
+  REQUIRE(CGAL::Spectral_deformation::internal::Eigensolvers::dense_generalized_eigenpairs(
       Q, mass, m, dense_values, dense_vectors, message));
 
   for(Eigen::Index block_size : {Eigen::Index(1), Eigen::Index(3), Eigen::Index(8), Eigen::Index(16)})
@@ -226,7 +226,7 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
   Eigen::VectorXd values, dense_values;
   Eigen::MatrixXd vectors, dense_vectors;
   std::string message;
-  REQUIRE(CGAL::Spectral_deformation::internal::dense_generalized_eigenpairs(
+  REQUIRE(CGAL::Spectral_deformation::internal::Eigensolvers::dense_generalized_eigenpairs(
       Q, mass, 12, dense_values, dense_vectors, message));
   CGAL::Block_lanczos_eigensolver_traits<> block(1e-10, 4, 200, 0);
   block.set_reference_fallback(false);
@@ -344,7 +344,7 @@ TEST_CASE("block Lanczos: the constants of each component are deflated, only for
   const Surface_mesh spheres = to_mesh<Surface_mesh>(two_spheres(3));
   const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(spheres);
   const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(spheres).diagonal();
-  const CGAL::Spectral_deformation::internal::Laplacian_null_space null_space(Q, mass);
+  const CGAL::Spectral_deformation::internal::Eigensolvers::Laplacian_null_space null_space(Q, mass);
   REQUIRE(null_space.dimension() == 2);
   const Eigen::MatrixXd constants = null_space.basis();
   CHECK((constants.transpose() * mass.asDiagonal() * constants - Eigen::MatrixXd::Identity(2, 2))
@@ -373,11 +373,11 @@ TEST_CASE("block Lanczos: the constants of each component are deflated, only for
   Eigen::SparseMatrix<double> shifted = Q;
   for(Eigen::Index i = 0; i < Q.rows(); ++i)
     shifted.coeffRef(i, i) += mass[i];
-  CHECK(CGAL::Spectral_deformation::internal::Laplacian_null_space(shifted, mass).dimension() == 0);
+  CHECK(CGAL::Spectral_deformation::internal::Eigensolvers::Laplacian_null_space(shifted, mass).dimension() == 0);
   Eigen::VectorXd dense_values, shifted_values;
   Eigen::MatrixXd dense_vectors;
   std::string message;
-  REQUIRE(CGAL::Spectral_deformation::internal::dense_generalized_eigenpairs(
+  REQUIRE(CGAL::Spectral_deformation::internal::Eigensolvers::dense_generalized_eigenpairs(
       Q, mass, 12, dense_values, dense_vectors, message));
   REQUIRE(block.compute(shifted, mass, 12, shifted_values, vectors));
   CHECK((shifted_values - dense_values - Eigen::VectorXd::Ones(12)).cwiseAbs().maxCoeff() <

@@ -12,7 +12,7 @@
 
 using namespace test_meshes;
 namespace internal = CGAL::Spectral_deformation::internal;
-typedef internal::Spatial_dual_laplacian_solver<> Solver;
+typedef internal::Deformation::Spatial_dual_laplacian_solver<> Solver;
 
 // Exact constraints for weight 0, soft ones with the weight otherwise.
 void preprocess(Solver& solver, const std::vector<int>& constrained, double weight)
@@ -27,13 +27,13 @@ typedef Solver::Positions Positions;
 namespace {
 
 template <class Mesh>
-internal::Triangle_arrays arrays_of(const Mesh& mesh)
+internal::Mesh::Triangle_arrays arrays_of(const Mesh& mesh)
 {
-  return internal::extract_triangle_arrays(mesh, CGAL::parameters::default_values());
+  return internal::Mesh::extract_triangle_arrays(mesh, CGAL::parameters::default_values());
 }
 
 // Vertices of the bar with z below `low` or above `high`.
-std::vector<int> ends_of_bar(const internal::Triangle_arrays& bar, double low, double high)
+std::vector<int> ends_of_bar(const internal::Mesh::Triangle_arrays& bar, double low, double high)
 {
   std::vector<int> ends;
   for(Eigen::Index i = 0; i < bar.number_of_vertices(); ++i)
@@ -56,7 +56,7 @@ Eigen::Matrix3d rotation(double angle, const Eigen::Vector3d& axis)
 }
 
 // The bar twisted by `angle` about its axis: the top end turns, the bottom stays.
-Positions twisted_targets(const internal::Triangle_arrays& bar, const std::vector<int>& ends,
+Positions twisted_targets(const internal::Mesh::Triangle_arrays& bar, const std::vector<int>& ends,
                           double angle)
 {
   Positions targets = rows_of(bar.positions, ends);
@@ -71,7 +71,7 @@ Positions twisted_targets(const internal::Triangle_arrays& bar, const std::vecto
 
 TEST_CASE("spatial solver: no motion returns the input", "[spatial]")
 {
-  const internal::Triangle_arrays bar = arrays_of(to_mesh<Surface_mesh>(test_meshes::bar(16, 3)));
+  const internal::Mesh::Triangle_arrays bar = arrays_of(to_mesh<Surface_mesh>(test_meshes::bar(16, 3)));
   const std::vector<int> ends = ends_of_bar(bar, 0.01, 4.99);
   for(double weight : {0.0, 1.0})
   {
@@ -85,7 +85,7 @@ TEST_CASE("spatial solver: no motion returns the input", "[spatial]")
 
 TEST_CASE("spatial solver: a rigid motion of all constraints moves the mesh rigidly", "[spatial]")
 {
-  const internal::Triangle_arrays bar = arrays_of(to_mesh<Surface_mesh>(test_meshes::bar(16, 3)));
+  const internal::Mesh::Triangle_arrays bar = arrays_of(to_mesh<Surface_mesh>(test_meshes::bar(16, 3)));
   const std::vector<int> ends = ends_of_bar(bar, 0.01, 4.99);
   const Eigen::Matrix3d R = rotation(1.0, Eigen::Vector3d(1, 2, 0.5));
   const Eigen::RowVector3d t(0.3, -1.0, 2.0);
@@ -94,7 +94,7 @@ TEST_CASE("spatial solver: a rigid motion of all constraints moves the mesh rigi
   Solver solver(bar);
   REQUIRE_NOTHROW(preprocess(solver, ends, 0.0));
   Positions result;
-  const internal::Iteration_report report =
+  const internal::Deformation::Iteration_report report =
       solver.solve(rows_of(moved, ends), bar.positions, result, 1000, 1e-15);
   INFO("iterations " << report.iterations << ", last step " << report.last_step);
   CHECK((result - moved).norm() / moved.norm() <= 1e-8);
@@ -102,16 +102,16 @@ TEST_CASE("spatial solver: a rigid motion of all constraints moves the mesh rigi
 
 TEST_CASE("spatial solver: iterations lower the ARAP energy of a twist", "[spatial]")
 {
-  const internal::Triangle_arrays bar = arrays_of(to_mesh<Surface_mesh>(test_meshes::bar(24, 3)));
+  const internal::Mesh::Triangle_arrays bar = arrays_of(to_mesh<Surface_mesh>(test_meshes::bar(24, 3)));
   const std::vector<int> ends = ends_of_bar(bar, 0.01, 4.99);
   const Positions targets = twisted_targets(bar, ends, 2.0 * 3.14159265358979 / 3.0); // 120°
   Solver solver(bar);
   REQUIRE_NOTHROW(preprocess(solver, ends, 0.0));
   Positions linear, iterated;
   REQUIRE_NOTHROW(solver.solve(targets, bar.positions, linear, 0, 0.0));
-  const internal::Iteration_report report = solver.solve(targets, bar.positions, iterated, 100, 1e-6);
-  const double e_linear = internal::arap_energy(bar, linear);
-  const double e_iterated = internal::arap_energy(bar, iterated);
+  const internal::Deformation::Iteration_report report = solver.solve(targets, bar.positions, iterated, 100, 1e-6);
+  const double e_linear = internal::Deformation::arap_energy(bar, linear);
+  const double e_iterated = internal::Deformation::arap_energy(bar, iterated);
   INFO("ARAP energy linear " << e_linear << ", iterated " << e_iterated << " after "
                              << report.iterations << " iterations");
   CHECK(e_iterated < 0.5 * e_linear);
@@ -121,7 +121,7 @@ TEST_CASE("spatial solver: iterations lower the ARAP energy of a twist", "[spati
 
 TEST_CASE("spatial solver: bumpy plane with an open boundary", "[spatial]")
 {
-  const internal::Triangle_arrays plane = arrays_of(to_mesh<Surface_mesh>(bumpy_plane(20)));
+  const internal::Mesh::Triangle_arrays plane = arrays_of(to_mesh<Surface_mesh>(bumpy_plane(20)));
   std::vector<int> constrained;
   for(Eigen::Index i = 0; i < plane.number_of_vertices(); ++i)
     if(plane.positions(i, 1) < 0.06 || plane.positions(i, 1) > 0.94)
@@ -141,7 +141,7 @@ TEST_CASE("spatial solver: bumpy plane with an open boundary", "[spatial]")
     REQUIRE_NOTHROW(solver.solve(targets, plane.positions, linear, 0, 0.0));
     REQUIRE_NOTHROW(solver.solve(targets, plane.positions, iterated, 50, 1e-7));
     CHECK(iterated.allFinite());
-    CHECK(internal::arap_energy(plane, iterated) < internal::arap_energy(plane, linear));
+    CHECK(internal::Deformation::arap_energy(plane, iterated) < internal::Deformation::arap_energy(plane, linear));
     const double residual = (rows_of(iterated, constrained) - targets).rowwise().norm().maxCoeff();
     INFO("weight " << weight << ": largest constraint residual " << residual);
     if(weight == 0.0)
@@ -153,7 +153,7 @@ TEST_CASE("spatial solver: bumpy plane with an open boundary", "[spatial]")
 
 TEST_CASE("spatial solver: soft constraints tighten as the weight grows", "[spatial]")
 {
-  const internal::Triangle_arrays bar = arrays_of(to_mesh<Surface_mesh>(test_meshes::bar(16, 3)));
+  const internal::Mesh::Triangle_arrays bar = arrays_of(to_mesh<Surface_mesh>(test_meshes::bar(16, 3)));
   const std::vector<int> ends = ends_of_bar(bar, 0.01, 4.99);
   const Positions targets = twisted_targets(bar, ends, 1.0);
   double previous = std::numeric_limits<double>::infinity();
@@ -172,8 +172,8 @@ TEST_CASE("spatial solver: soft constraints tighten as the weight grows", "[spat
 TEST_CASE("spatial solver: same numbers on Surface_mesh and Polyhedron_3", "[spatial]")
 {
   const Soup soup = test_meshes::bar(12, 2);
-  const internal::Triangle_arrays a = arrays_of(to_mesh<Surface_mesh>(soup));
-  const internal::Triangle_arrays b = arrays_of(to_mesh<Polyhedron>(soup));
+  const internal::Mesh::Triangle_arrays a = arrays_of(to_mesh<Surface_mesh>(soup));
+  const internal::Mesh::Triangle_arrays b = arrays_of(to_mesh<Polyhedron>(soup));
   const std::vector<int> ends = ends_of_bar(a, 0.01, 4.99);
   Solver solver_a(a), solver_b(b);
   REQUIRE_NOTHROW(preprocess(solver_a, ends, 0.0));
@@ -186,7 +186,7 @@ TEST_CASE("spatial solver: same numbers on Surface_mesh and Polyhedron_3", "[spa
 
 TEST_CASE("spatial solver: clear failures", "[spatial][errors]")
 {
-  const internal::Triangle_arrays spheres = arrays_of(to_mesh<Surface_mesh>(two_spheres(2)));
+  const internal::Mesh::Triangle_arrays spheres = arrays_of(to_mesh<Surface_mesh>(two_spheres(2)));
   Solver solver(spheres);
   CHECK_THROWS_AS(solver.preprocess_exact({}), CGAL::Spectral_deformation_error);
   CHECK_THROWS_AS(solver.preprocess_exact({0, int(spheres.number_of_vertices())}),
@@ -195,7 +195,7 @@ TEST_CASE("spatial solver: clear failures", "[spatial][errors]")
   // Only the first sphere is constrained: the second one is free to float.
   CHECK_THROWS_WITH(solver.preprocess_exact({0, 1, 2}), Catch::Contains("component"));
 
-  const internal::Triangle_arrays bar = arrays_of(to_mesh<Surface_mesh>(test_meshes::bar(8, 2)));
+  const internal::Mesh::Triangle_arrays bar = arrays_of(to_mesh<Surface_mesh>(test_meshes::bar(8, 2)));
   Solver bar_solver(bar);
   Positions result = Positions::Zero(1, 3);
   CHECK_THROWS_WITH(bar_solver.solve(Positions::Zero(1, 3), bar.positions, result, 1, 0.0),

@@ -136,8 +136,8 @@ struct Run
 // and the whole mesh as ROI: the bottom end moved by `bottom_motion`, the top
 // end by `top_motion`.
 template <class Deformation, class Mesh = Surface_mesh>
-Run deform_bar(const Soup& soup, const internal::Rigid_motion& bottom_motion,
-               const internal::Rigid_motion& top_motion, unsigned int iterations, double tolerance,
+Run deform_bar(const Soup& soup, const internal::Deformation::Rigid_motion& bottom_motion,
+               const internal::Deformation::Rigid_motion& top_motion, unsigned int iterations, double tolerance,
                std::size_t m = 100, CGAL::Spectral_constraint_policy policy = CGAL::EXACT_CONSTRAINTS)
 {
   Mesh mesh = to_mesh<Mesh>(soup);
@@ -178,17 +178,17 @@ Run deform_bar(const Soup& soup, const internal::Rigid_motion& bottom_motion,
   return run;
 }
 
-internal::Rigid_motion motion(double angle, const Eigen::Vector3d& axis,
+internal::Deformation::Rigid_motion motion(double angle, const Eigen::Vector3d& axis,
                               const Eigen::Vector3d& center = Eigen::Vector3d::Zero(),
                               const Eigen::Vector3d& shift = Eigen::Vector3d::Zero())
 {
-  internal::Rigid_motion result;
+  internal::Deformation::Rigid_motion result;
   result.rotation = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
   result.translation = center - result.rotation * center + shift;
   return result;
 }
 
-Eigen::MatrixXd moved_rigidly(const Eigen::MatrixXd& x, const internal::Rigid_motion& m)
+Eigen::MatrixXd moved_rigidly(const Eigen::MatrixXd& x, const internal::Deformation::Rigid_motion& m)
 {
   return ((x * m.rotation.transpose()).rowwise() + m.translation.transpose()).eval();
 }
@@ -198,9 +198,9 @@ double diagonal_of(const Eigen::MatrixXd& x)
   return (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
 }
 
-internal::Triangle_arrays arrays_of(const Soup& soup)
+internal::Mesh::Triangle_arrays arrays_of(const Soup& soup)
 {
-  return internal::extract_triangle_arrays(to_mesh<Surface_mesh>(soup),
+  return internal::Mesh::extract_triangle_arrays(to_mesh<Surface_mesh>(soup),
                                            CGAL::parameters::default_values());
 }
 
@@ -234,7 +234,7 @@ TEST_CASE("API parity with CGAL::Surface_mesh_deformation", "[deformation][api]"
 TEST_CASE("a rigid motion of all constraints moves the mesh rigidly", "[deformation]")
 {
   const Soup soup = bar(16, 3);
-  const internal::Rigid_motion rigid = motion(1.0, Eigen::Vector3d(1, 2, 0.5), Eigen::Vector3d(0, 0, 2.5),
+  const internal::Deformation::Rigid_motion rigid = motion(1.0, Eigen::Vector3d(1, 2, 0.5), Eigen::Vector3d(0, 0, 2.5),
                                               Eigen::Vector3d(0.3, -1, 2));
   SECTION("spectral, exact and soft policies")
   {
@@ -254,7 +254,7 @@ TEST_CASE("a rigid motion of all constraints moves the mesh rigidly", "[deformat
   }
   SECTION("linear: translations are reproduced, rotations are not (the reason to iterate)")
   {
-    const internal::Rigid_motion shift = motion(0.0, Eigen::Vector3d::UnitX(), Eigen::Vector3d::Zero(),
+    const internal::Deformation::Rigid_motion shift = motion(0.0, Eigen::Vector3d::UnitX(), Eigen::Vector3d::Zero(),
                                                 Eigen::Vector3d(0.3, -1, 2));
     const Run run = deform_bar<Linear>(soup, shift, shift, 10, 0.0, 60);
     CHECK((run.after - moved_rigidly(run.before, shift)).cwiseAbs().maxCoeff() <
@@ -339,14 +339,14 @@ TEST_CASE("iteration lowers the ARAP energy of a twist; the spectral result appr
           "[deformation]")
 {
   const Soup soup = bar(24, 3);
-  const internal::Triangle_arrays rest = arrays_of(soup);
-  const internal::Rigid_motion still;
-  const internal::Rigid_motion twist = motion(2 * pi / 3, Eigen::Vector3d::UnitZ());
+  const internal::Mesh::Triangle_arrays rest = arrays_of(soup);
+  const internal::Deformation::Rigid_motion still;
+  const internal::Deformation::Rigid_motion twist = motion(2 * pi / 3, Eigen::Vector3d::UnitZ());
 
   const Run linear = deform_bar<Linear>(soup, still, twist, 1, 0.0, 100);
   const Run iterated = deform_bar<Spectral>(soup, still, twist, 50, 1e-6, 100);
-  const double e_linear = internal::arap_energy(rest, linear.after);
-  const double e_iterated = internal::arap_energy(rest, iterated.after);
+  const double e_linear = internal::Deformation::arap_energy(rest, linear.after);
+  const double e_iterated = internal::Deformation::arap_energy(rest, iterated.after);
   INFO("ARAP energy: linear " << e_linear << ", iterated " << e_iterated);
   // The detail transfer removes the stretch of the smooth mesh from both
   // results, which narrows the gap between them: the iteration still takes
@@ -354,7 +354,7 @@ TEST_CASE("iteration lowers the ARAP energy of a twist; the spectral result appr
   CHECK(e_iterated < 0.6 * e_linear);
 
   // Bend (the spectral and spatial solvers agree better and better as m grows).
-  const internal::Rigid_motion bend = motion(pi / 4, Eigen::Vector3d::UnitX(), Eigen::Vector3d(0, 0, 5.0));
+  const internal::Deformation::Rigid_motion bend = motion(pi / 4, Eigen::Vector3d::UnitX(), Eigen::Vector3d(0, 0, 5.0));
   const Run spatial = deform_bar<Spatial>(soup, still, bend, 200, 1e-10);
   double previous = std::numeric_limits<double>::infinity();
   for(std::size_t m : {10, 40, 160})
@@ -457,8 +457,8 @@ TEST_CASE("a single-precision copy of the basis: close to double, and switched b
 TEST_CASE("Surface_mesh and Polyhedron_3 give the same deformation", "[deformation]")
 {
   const Soup soup = bar(12, 2);
-  const internal::Rigid_motion still;
-  const internal::Rigid_motion bend = motion(pi / 3, Eigen::Vector3d::UnitY(), Eigen::Vector3d(0, 0, 5.0));
+  const internal::Deformation::Rigid_motion still;
+  const internal::Deformation::Rigid_motion bend = motion(pi / 3, Eigen::Vector3d::UnitY(), Eigen::Vector3d(0, 0, 5.0));
   const Run a = deform_bar<Spectral>(soup, still, bend, 10, 0.0, 40);
   const Run b = deform_bar<CGAL::Spectral_surface_mesh_deformation<Polyhedron>, Polyhedron>(
       soup, still, bend, 10, 0.0, 40);
@@ -644,7 +644,7 @@ TEST_CASE("Botsch-Sorkine cactus and plane: residuals and ROI border of both pol
       for(auto v : copy.vertices())
         if(status[v.idx()] == CGAL::IO::FIXED_VERTEX)
           CHECK(after.row(v.idx()) == before.row(v.idx()));
-      CHECK(internal::arap_energy(internal::extract_triangle_arrays(mesh, CGAL::parameters::default_values()),
+      CHECK(internal::Deformation::arap_energy(internal::Mesh::extract_triangle_arrays(mesh, CGAL::parameters::default_values()),
                                   after) < 0.05);
     }
   }
@@ -691,14 +691,14 @@ Eigen::MatrixXd bend_bar_with_patches(std::size_t patches, const Eigen::Matrix3d
 TEST_CASE("rotation patches are connected, cover every dual vertex, one surface each", "[patches]")
 {
   const Soup soup = two_spheres(3);
-  const internal::Triangle_arrays arrays =
-      internal::extract_triangle_arrays(to_mesh<Surface_mesh>(soup), CGAL::parameters::default_values());
-  const internal::Dual_mesh_operator dual(arrays.triangles, arrays.number_of_vertices());
-  const internal::Positions centroids = dual.centroids(arrays.positions);
+  const internal::Mesh::Triangle_arrays arrays =
+      internal::Mesh::extract_triangle_arrays(to_mesh<Surface_mesh>(soup), CGAL::parameters::default_values());
+  const internal::Mesh::Dual_mesh_operator dual(arrays.triangles, arrays.number_of_vertices());
+  const internal::Mesh::Positions centroids = dual.centroids(arrays.positions);
   const std::vector<int>& row_faces = dual.row_faces();
   for(std::size_t count : {1, 7, 40, 300})
   {
-    const std::vector<int> patch = internal::cluster_dual_rows(dual, centroids, count);
+    const std::vector<int> patch = internal::Deformation::cluster_dual_rows(dual, centroids, count);
     REQUIRE(patch.size() == row_faces.size());
     const int patches = *std::max_element(patch.begin(), patch.end()) + 1;
     INFO(count << " requested, " << patches << " made");
@@ -800,19 +800,19 @@ TEST_CASE("constraint products: rigid parts from per-group moments equal the pro
 {
   const Eigen::Index n = 60, m = 12;
   std::srand(7);
-  const internal::Positions rest = internal::Positions::Random(n, 3) * 3.0;
-  const internal::Positions smooth = rest + 0.1 * internal::Positions::Random(n, 3);
-  internal::Constraint_set set;
+  const internal::Mesh::Positions rest = internal::Mesh::Positions::Random(n, 3) * 3.0;
+  const internal::Mesh::Positions smooth = rest + 0.1 * internal::Mesh::Positions::Random(n, 3);
+  internal::Deformation::Constraint_set set;
   set.constrained = {0, 1, 2, 3, 4, 10, 11, 12, 13, 20, 21, 22, 23, 24};
   set.number_of_fixed = 5;
   set.groups = {{0, 1, 2, 3, 4}, {5, 6, 7, 8}, {9, 10, 11, 12, 13}};
   Eigen::MatrixXd rows = Eigen::MatrixXd::Random(static_cast<Eigen::Index>(set.size()), m);
-  internal::Constraint_products products;
+  internal::Deformation::Constraint_products products;
   products.initialize(set, rows, rest, smooth);
 
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(1.1, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
   const Eigen::RowVector3d shift(0.3, -2.0, 1.5);
-  internal::Positions targets(static_cast<Eigen::Index>(set.size()), 3);
+  internal::Mesh::Positions targets(static_cast<Eigen::Index>(set.size()), 3);
   for(std::size_t k = 0; k < set.size(); ++k)
   {
     const Eigen::RowVector3d v = rest.row(set.constrained[k]);
@@ -824,7 +824,7 @@ TEST_CASE("constraint products: rigid parts from per-group moments equal the pro
       targets.row(static_cast<Eigen::Index>(k)) = v * (1.0 + 0.2 * double(k)) + shift;
   }
   const Eigen::MatrixXd expected =
-      rows.transpose() * internal::smooth_targets(set, rest, smooth, targets);
+      rows.transpose() * internal::Deformation::smooth_targets(set, rest, smooth, targets);
   const Eigen::MatrixXd computed = products.product(set, rows, targets);
   INFO("expected\n" << expected << "\ncomputed\n" << computed);
   CHECK((computed - expected).norm() <= 1e-12 * expected.norm());
@@ -833,7 +833,7 @@ TEST_CASE("constraint products: rigid parts from per-group moments equal the pro
   // direct one does.
   targets.row(10) += Eigen::RowVector3d(0.5, 0.25, -1.0);
   const Eigen::MatrixXd expected2 =
-      rows.transpose() * internal::smooth_targets(set, rest, smooth, targets);
+      rows.transpose() * internal::Deformation::smooth_targets(set, rest, smooth, targets);
   CHECK((products.product(set, rows, targets) - expected2).norm() <= 1e-12 * expected2.norm());
   CHECK((expected2 - expected).norm() > 1e-3 * expected.norm());
 }

@@ -60,7 +60,7 @@ public:
   /// like the face), `heights` (a vector of `rows` signed heights `h`),
   /// `coordinates` (`rows × 3`, `l̂ = -h n̂`) and `degenerate_rows` (the
   /// number of rows whose neighbour triangle was degenerate).
-  typedef Spectral_deformation::internal::Dual_coordinates Coordinates;
+  typedef Spectral_deformation::internal::Mesh::Dual_coordinates Coordinates;
   /// Face descriptor of the mesh.
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
 
@@ -81,9 +81,9 @@ public:
   explicit Dual_mesh_laplacian(const TriangleMesh& tm,
                                const NamedParameters& np = parameters::default_values())
   {
-    const Spectral_deformation::internal::Triangle_arrays arrays =
-        Spectral_deformation::internal::extract_triangle_arrays(tm, np);
-    m_operator = Spectral_deformation::internal::Dual_mesh_operator(
+    const Spectral_deformation::internal::Mesh::Triangle_arrays arrays =
+        Spectral_deformation::internal::Mesh::extract_triangle_arrays(tm, np);
+    m_operator = Spectral_deformation::internal::Mesh::Dual_mesh_operator(
         arrays.triangles, arrays.number_of_vertices());
     m_positions = arrays.positions;
     m_rest = m_operator.evaluate(m_positions);
@@ -149,7 +149,7 @@ public:
   }
 
 private:
-  Spectral_deformation::internal::Dual_mesh_operator m_operator;
+  Spectral_deformation::internal::Mesh::Dual_mesh_operator m_operator;
   Positions m_positions;
   Coordinates m_rest;
   std::vector<face_descriptor> m_faces;

@@ -28,6 +28,9 @@ namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
 
+using Memory::process_wide_tuning_of;
+using Mesh::Triangle_arrays;
+
 /// Makes the sign of every column deterministic: its entry of largest
 /// magnitude (first one on ties) is positive.
 inline void normalize_signs(Eigen::MatrixXd& eigenvectors)
@@ -152,8 +155,8 @@ public:
                const NamedParameters& np = parameters::default_values(),
                Eigensolver_traits eigensolver = Eigensolver_traits())
   {
-    const Spectral_deformation::internal::Triangle_arrays arrays =
-        Spectral_deformation::internal::extract_triangle_arrays(tm, np);
+    const Spectral_deformation::internal::Mesh::Triangle_arrays arrays =
+        Spectral_deformation::internal::Mesh::extract_triangle_arrays(tm, np);
     Vector eigenvalues, mass;
     Matrix eigenvectors;
     Spectral_deformation::internal::compute_manifold_harmonics(
@@ -163,7 +166,7 @@ public:
     m_data.basis.swap(eigenvectors);
     m_data.mass.swap(mass);
     m_data.number_of_faces = static_cast<std::uint64_t>(arrays.number_of_faces());
-    m_data.fingerprint = Spectral_deformation::internal::fingerprint(arrays);
+    m_data.fingerprint = Spectral_deformation::internal::Mesh::fingerprint(arrays);
   }
 
   /// \name Accessors
@@ -186,7 +189,7 @@ public:
   std::uint64_t mesh_fingerprint() const { return m_data.fingerprint; }
 
   /// \cond SKIP_IN_MANUAL
-  const Spectral_deformation::internal::Basis_data& data() const { return m_data; }
+  const Spectral_deformation::internal::Basis::Basis_data& data() const { return m_data; }
   /// \endcond
 
   /// @}
@@ -246,7 +249,7 @@ public:
     if(empty())
       throw Spectral_deformation_error(Spectral_deformation_error::IO_ERROR,
                                        "save: the basis is empty");
-    Spectral_deformation::internal::write_basis(os, m_data);
+    Spectral_deformation::internal::Basis::write_basis(os, m_data);
   }
 
   /// Reads a basis written by `save()` and checks that it belongs to `tm`
@@ -261,9 +264,9 @@ public:
   void load(std::istream& is, const TriangleMesh& tm,
             const NamedParameters& np = parameters::default_values())
   {
-    Spectral_deformation::internal::Basis_data data = Spectral_deformation::internal::read_basis(is);
-    Spectral_deformation::internal::check_basis_matches(
-        data, Spectral_deformation::internal::extract_triangle_arrays(tm, np));
+    Spectral_deformation::internal::Basis::Basis_data data = Spectral_deformation::internal::Basis::read_basis(is);
+    Spectral_deformation::internal::Basis::check_basis_matches(
+        data, Spectral_deformation::internal::Mesh::extract_triangle_arrays(tm, np));
     m_data = std::move(data);
   }
 
@@ -278,7 +281,7 @@ private:
           std::string(what) + ": the data must have one row per vertex of the basis");
   }
 
-  Spectral_deformation::internal::Basis_data m_data;
+  Spectral_deformation::internal::Basis::Basis_data m_data;
 };
 
 } // namespace CGAL

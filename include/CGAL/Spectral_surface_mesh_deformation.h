@@ -139,10 +139,10 @@ template <class TM,
           class VPM = Default>
 class Spectral_surface_mesh_deformation
 {
-  typedef Spectral_deformation::internal::Algorithm_of<TAG> Algorithm_argument;
-  typedef Spectral_deformation::internal::Eigensolver_argument<ET, TM, Block_lanczos_eigensolver_traits<>>
+  typedef Spectral_deformation::internal::Deformation::Algorithm_of<TAG> Algorithm_argument;
+  typedef Spectral_deformation::internal::Deformation::Eigensolver_argument<ET, TM, Block_lanczos_eigensolver_traits<>>
       Eigensolver_argument;
-  typedef Spectral_deformation::internal::Sparse_solver_argument<ST> Sparse_solver_argument;
+  typedef Spectral_deformation::internal::Deformation::Sparse_solver_argument<ST> Sparse_solver_argument;
 
   static_assert(Algorithm_argument::valid,
                 "Spectral_surface_mesh_deformation: the 4th template argument (TAG) must be a "
@@ -198,11 +198,11 @@ public:
   /// @}
 
 private:
-  typedef Spectral_deformation::internal::Positions Positions;
-  typedef Spectral_deformation::internal::Triangle_arrays Triangle_arrays;
+  typedef Spectral_deformation::internal::Mesh::Positions Positions;
+  typedef Spectral_deformation::internal::Mesh::Triangle_arrays Triangle_arrays;
   typedef Spectral_deformation_error Error;
 
-  typedef Spectral_deformation::internal::Pipeline_selector<Algorithm_argument::value, Sparse_solver_traits,
+  typedef Spectral_deformation::internal::Deformation::Pipeline_selector<Algorithm_argument::value, Sparse_solver_traits,
                                                             Spatial_solver_traits>
       Selector;
   typedef typename Selector::type Pipeline;
@@ -229,7 +229,7 @@ public:
 private:
 
   // Everything that depends only on the ROI and the initial geometry.
-  struct Region : Spectral_deformation::internal::Region<vertex_descriptor>
+  struct Region : Spectral_deformation::internal::Mesh::Region<vertex_descriptor>
   {
     Pipeline pipeline;
   };
@@ -294,7 +294,7 @@ public:
   /// \param vertex_point_map the positions, read and written
   /// \param weight_calculator not used
   template <class WeightCalculator,
-            std::enable_if_t<Spectral_deformation::internal::Is_weight_calculator<WeightCalculator, TM>::value,
+            std::enable_if_t<Spectral_deformation::internal::Deformation::Is_weight_calculator<WeightCalculator, TM>::value,
                              int> = 0>
   Spectral_surface_mesh_deformation(Triangle_mesh& triangle_mesh,
                                     Vertex_index_map vertex_index_map,
@@ -579,7 +579,7 @@ public:
       m_deform_report.success = false;
       m_deform_report.message = out_of_memory;
     }
-    m_deform_report.total_seconds = Spectral_deformation::internal::seconds_since(start);
+    m_deform_report.total_seconds = Spectral_deformation::internal::Deformation::seconds_since(start);
   }
 
   /// Puts the vertices of the ROI back at their initial positions, resets the
@@ -758,7 +758,7 @@ public:
     static_assert(is_spectral, "save_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
     if(!m_region || m_region->pipeline.basis().empty())
       throw Error(Error::IO_ERROR, "save_basis: no basis yet, call preprocess() first");
-    Spectral_deformation::internal::write_basis(os, m_region->pipeline.basis());
+    Spectral_deformation::internal::Basis::write_basis(os, m_region->pipeline.basis());
   }
 
   /// Reads a basis written by `save_basis()` (or by
@@ -772,8 +772,8 @@ public:
   void load_basis(std::istream& is)
   {
     static_assert(is_spectral, "load_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    Spectral_deformation::internal::Basis_data data = Spectral_deformation::internal::read_basis(is);
-    Spectral_deformation::internal::check_basis_matches(data, extract_region().arrays);
+    Spectral_deformation::internal::Basis::Basis_data data = Spectral_deformation::internal::Basis::read_basis(is);
+    Spectral_deformation::internal::Basis::check_basis_matches(data, extract_region().arrays);
     m_supplied_basis = std::move(data);
     m_region.reset();
     m_constraints_valid = false;
@@ -902,9 +902,9 @@ private:
 
   // The faces incident to ROI vertices, with local vertex indices in the
   // order of the vertex index map; validated.
-  Spectral_deformation::internal::Region<vertex_descriptor> extract_region() const
+  Spectral_deformation::internal::Mesh::Region<vertex_descriptor> extract_region() const
   {
-    return Spectral_deformation::internal::extract_region(
+    return Spectral_deformation::internal::Mesh::extract_region(
         m_tm, [this](vertex_descriptor vd) { return id(vd); }, m_is_roi, m_original);
   }
 
@@ -912,14 +912,14 @@ private:
   {
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<Region> region(new Region());
-    static_cast<Spectral_deformation::internal::Region<vertex_descriptor>&>(*region) = extract_region();
+    static_cast<Spectral_deformation::internal::Mesh::Region<vertex_descriptor>&>(*region) = extract_region();
     if constexpr(is_spectral)
       region->pipeline.build(*region, m_supplied_basis, m_settings, m_eigensolver, m_preprocess_report);
     else
       region->pipeline.build(*region);
     m_region = std::move(region);
     m_preprocess_report.region_rebuilt = true;
-    m_preprocess_report.region_seconds = Spectral_deformation::internal::seconds_since(start);
+    m_preprocess_report.region_seconds = Spectral_deformation::internal::Deformation::seconds_since(start);
   }
 
   void preprocess_or_throw()
@@ -948,7 +948,7 @@ private:
     if constexpr(is_spectral)
       m_preprocess_report.number_of_frequencies = region.pipeline.number_of_frequencies();
 
-    m_constraints = Spectral_deformation::internal::make_constraint_set(
+    m_constraints = Spectral_deformation::internal::Deformation::make_constraint_set(
         region, [this, &region](std::size_t i) { return is_control_vertex(region.vertices[i]); });
     m_preprocess_report.number_of_constrained_vertices = m_constraints.size();
 
@@ -957,7 +957,7 @@ private:
       region.pipeline.prepare(region, m_constraints, m_settings);
     else
       region.pipeline.prepare(region, m_constraints);
-    m_preprocess_report.factorization_seconds = Spectral_deformation::internal::seconds_since(start);
+    m_preprocess_report.factorization_seconds = Spectral_deformation::internal::Deformation::seconds_since(start);
     m_constraints_valid = true;
   }
 
@@ -1026,13 +1026,13 @@ private:
 
   unsigned int m_iterations = 10;
   double m_tolerance = 1e-4;
-  Spectral_deformation::internal::Spectral_settings m_settings;
+  Spectral_deformation::internal::Deformation::Spectral_settings m_settings;
   Eigensolver_traits m_eigensolver;
-  Spectral_deformation::internal::Basis_data m_supplied_basis;
+  Spectral_deformation::internal::Basis::Basis_data m_supplied_basis;
 
   std::unique_ptr<Region> m_region;
   bool m_constraints_valid = false;
-  Spectral_deformation::internal::Constraint_set m_constraints;
+  Spectral_deformation::internal::Deformation::Constraint_set m_constraints;
 
   Spectral_preprocess_report m_preprocess_report;
   Spectral_deformation_report m_deform_report;

@@ -297,7 +297,7 @@ public:
 private:
   static Eigen::Index round_up(Eigen::Index value, Eigen::Index multiple)
   {
-    return Spectral_deformation::internal::round_up(value, multiple);
+    return Spectral_deformation::internal::Eigensolvers::round_up(value, multiple);
   }
 
   // Reports the block iteration as `Progress`.
@@ -325,7 +325,7 @@ private:
   {
     report(progress, Progress::DENSE_SOLVE);
     std::string message;
-    return Spectral_deformation::internal::dense_generalized_eigenpairs(
+    return Spectral_deformation::internal::Eigensolvers::dense_generalized_eigenpairs(
                stiffness, mass, m, eigenvalues, eigenvectors, message) ||
            fail(message);
   }
@@ -337,17 +337,17 @@ private:
                        Progress& progress, Eigen::VectorXd& eigenvalues,
                        Eigen::MatrixXd& eigenvectors)
   {
-    Spectral_deformation::internal::Block_lanczos_settings settings;
+    Spectral_deformation::internal::Eigensolvers::Block_lanczos_settings settings;
     settings.block_size = b;
     settings.max_dimension = max_dimension;
     settings.tolerance = m_tolerance;
     settings.process_wide_tuning = m_process_wide_tuning;
     Progress_listener listener{*this, progress};
-    Spectral_deformation::internal::Block_lanczos_failure failure;
+    Spectral_deformation::internal::Eigensolvers::Block_lanczos_failure failure;
     bool success = false;
     try
     {
-      success = Spectral_deformation::internal::block_lanczos_eigenpairs<SparseSPDSolverTraits>(
+      success = Spectral_deformation::internal::Eigensolvers::block_lanczos_eigenpairs<SparseSPDSolverTraits>(
                     stiffness, mass, m, settings, listener, eigenvalues, eigenvectors, failure) ||
                 fail(failure.message);
     }
@@ -375,9 +375,9 @@ private:
   {
     namespace SD = Spectral_deformation::internal;
     report(progress, Progress::REFERENCE_SOLVE);
-    const Eigen::Index ncv = SD::spectra_subspace_dimension(stiffness.rows(), m);
+    const Eigen::Index ncv = SD::Eigensolvers::spectra_subspace_dimension(stiffness.rows(), m);
     if(ncv >= stiffness.rows())
-      return SD::dense_generalized_eigenpairs(stiffness, mass, m, eigenvalues, eigenvectors,
+      return SD::Eigensolvers::dense_generalized_eigenpairs(stiffness, mass, m, eigenvalues, eigenvectors,
                                               message);
     std::function<void()> after_solve;
     if(m_progress_callback)
@@ -385,12 +385,12 @@ private:
         ++progress.solves;
         report(progress, Progress::REFERENCE_SOLVE);
       };
-    SD::Spectra_lanczos_settings settings;
+    SD::Eigensolvers::Spectra_lanczos_settings settings;
     settings.subspace_dimension = ncv;
     settings.max_iterations = 1000;
     settings.tolerance = m_tolerance;
     settings.process_wide_tuning = m_process_wide_tuning;
-    return SD::spectra_shift_invert_eigenpairs<SparseSPDSolverTraits>(
+    return SD::Eigensolvers::spectra_shift_invert_eigenpairs<SparseSPDSolverTraits>(
         stiffness, mass, m, settings, m_progress_callback ? &after_solve : nullptr, eigenvalues,
         eigenvectors, message);
   }

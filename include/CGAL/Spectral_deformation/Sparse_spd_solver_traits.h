@@ -233,7 +233,7 @@ public:
       m_factored = m_empty;
       return m_factored;
     }
-    const Spectral_deformation::internal::Cholmod_huge_page_allocator huge_pages(
+    const Spectral_deformation::internal::Memory::Cholmod_huge_page_allocator huge_pages(
         m_process_wide_tuning);
     bool computed = false;
     if(Form == CHOLMOD_SIMPLICIAL_FACTOR)
@@ -269,7 +269,7 @@ public:
 #endif
       computed = m_solver.compute_checked(A);
     m_factored = computed;
-    m_subtree_solve = Spectral_deformation::internal::Two_subtree_triangular_solve();
+    m_subtree_solve = Spectral_deformation::internal::Linear_algebra::Two_subtree_triangular_solve();
     const cholmod_factor* L = m_factored ? m_solver.factor() : nullptr;
     if(Form == CHOLMOD_SIMPLICIAL_FACTOR && L != nullptr && !L->is_super && L->is_ll &&
        L->itype == CHOLMOD_INT && L->xtype == CHOLMOD_REAL && L->dtype == CHOLMOD_DOUBLE)
@@ -299,7 +299,7 @@ public:
       return false;
     X.resize(B.rows(), B.cols());
     // The work arrays of the first solve are allocated then.
-    const Spectral_deformation::internal::Cholmod_huge_page_allocator huge_pages(
+    const Spectral_deformation::internal::Memory::Cholmod_huge_page_allocator huge_pages(
         m_process_wide_tuning);
     if(m_subtree_solve.usable() && concurrent_threads() >= 2)
       return solve_in_subtrees(B, X) && X.allFinite();
@@ -437,7 +437,7 @@ private:
   mutable cholmod_common m_second_common;
   mutable Work_arrays m_work[2];
   double m_supernodal_switch = 200.0;
-  Spectral_deformation::internal::Two_subtree_triangular_solve m_subtree_solve;
+  Spectral_deformation::internal::Linear_algebra::Two_subtree_triangular_solve m_subtree_solve;
   // The right-hand sides of solve_in_subtrees(), row after row.
   mutable std::vector<double> m_rows;
   // Row k of the system is row m_factor_position[k] of the factor.

@@ -112,7 +112,7 @@ public:
     const Eigen::Index n = stiffness.rows();
     if(m < 1 || m > n)
       return fail("the number of eigenpairs must be between 1 and the number of vertices");
-    const Eigen::Index ncv = Spectral_deformation::internal::spectra_subspace_dimension(n, m);
+    const Eigen::Index ncv = Spectral_deformation::internal::Eigensolvers::spectra_subspace_dimension(n, m);
     Progress progress;
     progress.number_of_eigenpairs = static_cast<std::size_t>(m);
     progress.number_of_vertices = static_cast<std::size_t>(n);
@@ -121,7 +121,7 @@ public:
     if(n <= m_dense_threshold || ncv >= n)
     {
       report(progress, Progress::DENSE_SOLVE);
-      success = Spectral_deformation::internal::dense_generalized_eigenpairs(
+      success = Spectral_deformation::internal::Eigensolvers::dense_generalized_eigenpairs(
           stiffness, mass, m, eigenvalues, eigenvectors, message);
     }
     else
@@ -136,12 +136,12 @@ public:
           report(progress, Progress::ITERATION);
         };
       report(progress, Progress::FACTORIZATION);
-      Spectral_deformation::internal::Spectra_lanczos_settings settings;
+      Spectral_deformation::internal::Eigensolvers::Spectra_lanczos_settings settings;
       settings.subspace_dimension = ncv;
       settings.max_iterations = m_max_iterations;
       settings.tolerance = m_tolerance;
       settings.process_wide_tuning = m_process_wide_tuning;
-      success = Spectral_deformation::internal::spectra_shift_invert_eigenpairs<
+      success = Spectral_deformation::internal::Eigensolvers::spectra_shift_invert_eigenpairs<
           SparseSPDSolverTraits>(stiffness, mass, m, settings,
                                  m_progress_callback ? &after_solve : nullptr, eigenvalues,
                                  eigenvectors, message);

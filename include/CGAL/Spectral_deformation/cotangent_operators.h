@@ -20,6 +20,10 @@ namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
 
+using Memory::Large_array;
+using Mesh::Triangle_arrays;
+using Mesh::row_vector;
+
 typedef Eigen::SparseMatrix<double>::StorageIndex Stiffness_index;
 
 // The cotangent stiffness matrix is assembled in compressed form directly:
@@ -206,7 +210,7 @@ cotangent_stiffness_matrix(const TriangleMesh& tm,
                            const NamedParameters& np = parameters::default_values())
 {
   return Spectral_deformation::internal::cotangent_stiffness(
-      Spectral_deformation::internal::extract_triangle_arrays(tm, np));
+      Spectral_deformation::internal::Mesh::extract_triangle_arrays(tm, np));
 }
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationOperators
@@ -227,7 +231,7 @@ lumped_mass_matrix(const TriangleMesh& tm,
                    const NamedParameters& np = parameters::default_values())
 {
   const Eigen::VectorXd mass = Spectral_deformation::internal::lumped_mass(
-      Spectral_deformation::internal::extract_triangle_arrays(tm, np));
+      Spectral_deformation::internal::Mesh::extract_triangle_arrays(tm, np));
   Eigen::SparseMatrix<double> matrix(mass.size(), mass.size());
   matrix.reserve(Eigen::VectorXi::Ones(mass.size()));
   for(Eigen::Index i = 0; i < mass.size(); ++i)

@@ -22,6 +22,10 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Basis {
+
+using Mesh::Triangle_arrays;
+using Mesh::fingerprint;
 
 /// A manifold harmonics basis and the identity of the mesh it belongs to.
 struct Basis_data
@@ -201,6 +205,7 @@ inline void check_basis_matches(const Basis_data& data, const Triangle_arrays& m
                                       "(connectivity or coordinates differ)");
 }
 
+} // namespace Basis
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -25,6 +25,11 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
+
+using Mesh::Dual_mesh_operator;
+using Mesh::Positions;
+using Mesh::Triangles;
 
 /// Groups the rows of `dual` (the dual vertices with three neighbours) into
 /// about `count` patches of neighbouring faces: seeds spread by farthest
@@ -345,6 +350,7 @@ private:
   mutable Eigen::Matrix<double, Eigen::Dynamic, 3> m_rotations;
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

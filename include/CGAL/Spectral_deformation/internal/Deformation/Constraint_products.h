@@ -21,6 +21,9 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
+
+using Mesh::Positions;
 
 /// The product H_cᵀ y of the constrained rows H_c of the basis (k×m) with the
 /// smooth targets y (k×3) of `smooth_targets()`, per target change at a cost
@@ -117,6 +120,7 @@ private:
   std::vector<Group> m_groups;
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

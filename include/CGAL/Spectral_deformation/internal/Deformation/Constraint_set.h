@@ -17,6 +17,11 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
+
+using Mesh::Positions;
+using Mesh::Region_geometry;
+using Mesh::Triangles;
 
 /// The constrained vertices of a region: the fixed ring first, then the
 /// control vertices (local indices), and their groups, each moved by one
@@ -143,6 +148,7 @@ inline Positions smooth_targets(const Constraint_set& set, const Positions& rest
   return result;
 }
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

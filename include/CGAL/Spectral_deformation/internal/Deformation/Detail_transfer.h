@@ -23,6 +23,12 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
+
+using Linear_algebra::Dirichlet_system;
+using Mesh::Positions;
+using Mesh::Triangle_arrays;
+using Mesh::connected_components;
 
 /// Detail transfer: the details of the detailed mesh follow the local
 /// rotations of the smooth mesh. R_i, the rotation of the smooth one-ring of
@@ -228,6 +234,7 @@ private:
   bool m_dirichlet_ready = false;
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -14,6 +14,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
 
 /// Wall-clock seconds since `start`, for the times of the reports.
 inline double seconds_since(std::chrono::steady_clock::time_point start)
@@ -44,6 +45,7 @@ struct Iteration_report
   }
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

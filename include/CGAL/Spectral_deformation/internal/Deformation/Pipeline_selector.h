@@ -14,6 +14,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
 
 /// The pipeline type of an algorithm tag, chosen at compile time: only the
 /// chosen one is instantiated. `DetailSolverTraits` factors the detail
@@ -33,6 +34,7 @@ struct Pipeline_selector<SPATIAL_DUAL_LAPLACIAN, DetailSolverTraits, SpatialSolv
   static constexpr bool is_spectral = false;
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -25,6 +25,9 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
+
+using Mesh::Positions;
 
 /// The edges of a triangle mesh around each vertex, with their cotangent
 /// weights w_ij = ½(cot α_ij + cot β_ij), read off the cotangent stiffness
@@ -251,6 +254,7 @@ private:
   mutable std::vector<Eigen::Matrix3d> m_covariances;
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -23,6 +23,14 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
+
+using Linear_algebra::Dirichlet_system;
+using Mesh::Dual_coordinates;
+using Mesh::Dual_mesh_operator;
+using Mesh::Positions;
+using Mesh::Triangle_arrays;
+using Mesh::connected_components;
 
 /// Dual Laplacian editing in the spatial domain (Au et al. 2006), the
 /// reference solver of the paper: least squares of [L̂F; w C] V = [l̂; w c]
@@ -204,6 +212,7 @@ private:
   SparseSPDSolverTraits m_solver;
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

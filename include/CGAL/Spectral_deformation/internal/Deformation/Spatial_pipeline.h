@@ -20,6 +20,10 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
+
+using Mesh::Positions;
+using Mesh::Region_geometry;
 
 /// The steps of `SPATIAL_DUAL_LAPLACIAN` for one region: the dual Laplacian
 /// system of the detailed region, factored per constraint set with the
@@ -69,6 +73,7 @@ private:
   bool m_has_solution = false;
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

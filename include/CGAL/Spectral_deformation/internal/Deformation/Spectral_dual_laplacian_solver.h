@@ -24,6 +24,13 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
+
+using Linear_algebra::Basis_panels;
+using Mesh::Dual_coordinates;
+using Mesh::Dual_mesh_operator;
+using Mesh::Positions;
+using Mesh::Triangle_arrays;
 
 /// Dual Laplacian editing in the space of a manifold harmonics basis (the
 /// paper, eq. 6-7): positions S = H Ṽ, least squares of
@@ -301,6 +308,7 @@ private:
   Clustered_rotation_rhs m_patches;
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

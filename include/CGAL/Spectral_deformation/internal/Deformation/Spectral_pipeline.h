@@ -29,6 +29,13 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
+
+using Basis::Basis_data;
+using Memory::process_wide_tuning_of;
+using Mesh::Positions;
+using Mesh::Region_geometry;
+using Mesh::fingerprint;
 
 /// The settings of a spectral deformation that its pipeline reads.
 struct Spectral_settings
@@ -213,6 +220,7 @@ private:
   bool m_has_solution = false;
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

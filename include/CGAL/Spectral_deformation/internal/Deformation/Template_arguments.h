@@ -29,6 +29,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
 
 /// The algorithm selected by a value of the template parameter `TAG` of
 /// `Spectral_surface_mesh_deformation`, by the type of the value: `valid`
@@ -180,6 +181,7 @@ struct Sparse_solver_argument
   typedef std::conditional_t<is_sparse_spd_solver_traits, ST, Default> type;
 };
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

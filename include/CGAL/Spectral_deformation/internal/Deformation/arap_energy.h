@@ -18,6 +18,10 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
+
+using Mesh::Positions;
+using Mesh::Triangle_arrays;
 
 /// As-rigid-as-possible energy (Sorkine and Alexa 2007) of `deformed` against
 /// the rest shape `rest`, with the best rotation per vertex one-ring and the
@@ -68,6 +72,7 @@ inline double arap_energy(const Triangle_arrays& rest, const Positions& deformed
   return energy / normalization;
 }
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -14,6 +14,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Deformation {
 
 /// A rigid motion x -> R x + t.
 /// The rotation of a 3×3 matrix `C` closest to it in the Frobenius norm
@@ -99,6 +100,7 @@ inline Rigid_motion fit_rigid_motion(const Eigen::Matrix<double, Eigen::Dynamic,
   return motion;
 }
 
+} // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -33,6 +33,12 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
+
+using Linear_algebra::Single_threaded_blas;
+using Memory::Background_prefault;
+using Memory::prefault_until;
+using Memory::set_process_wide_tuning_if_supported;
 
 // The block shift-invert Lanczos iteration of
 // `Block_lanczos_eigensolver_traits`, from the factorization of
@@ -235,6 +241,7 @@ bool block_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
                               listener, eigenvalues, eigenvectors, failure);
 }
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -19,6 +19,10 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
+
+using Memory::advise_huge_pages;
+using Memory::prefault;
 
 inline Eigen::Index round_up(Eigen::Index value, Eigen::Index multiple)
 {
@@ -136,6 +140,7 @@ struct Block_lanczos_state
   std::size_t reorthogonalizations = 0;
 };
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

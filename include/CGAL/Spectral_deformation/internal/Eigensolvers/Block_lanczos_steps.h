@@ -18,6 +18,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
 
 // The three-term recurrence of the block Lanczos method, one block at a
 // time: with V_J the J-th block of b columns of V,
@@ -81,6 +82,7 @@ inline void extend_lanczos_basis(Block_lanczos_state& state, Eigen::Index k, Eig
   state.T.block(k, k - b, b, b) = R;
 }
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

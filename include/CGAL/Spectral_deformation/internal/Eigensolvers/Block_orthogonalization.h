@@ -18,6 +18,9 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
+
+using Linear_algebra::threaded_dense_product;
 
 // The M-orthogonalization of the block being built (`state.block`) against
 // the subspace V, and its M-orthonormalization.
@@ -112,6 +115,7 @@ inline bool normalize_block(Block_lanczos_state& state, Eigen::Index k, Eigen::M
   return rank == b;
 }
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

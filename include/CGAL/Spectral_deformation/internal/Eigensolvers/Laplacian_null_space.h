@@ -18,6 +18,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
 
 // The null space of a stiffness matrix Q whose rows sum to zero (a
 // Laplacian): the functions constant on each connected component of the
@@ -113,6 +114,7 @@ private:
   Eigen::VectorXd m_mass;
 };
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -27,6 +27,7 @@ extern "C" void dsyevr_(const char* jobz, const char* range, const char* uplo, c
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
 
 /// The `count` largest eigenpairs of the symmetric matrix `A` (its lower
 /// triangle is read): `values` ascending, `vectors` (rows of A × count)
@@ -74,6 +75,7 @@ inline bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index 
 #endif
 }
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

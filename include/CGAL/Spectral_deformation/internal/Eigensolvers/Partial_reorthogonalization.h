@@ -20,6 +20,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
 
 // Partial reorthogonalization (Simon 1984, in block form): the new block is
 // orthogonalized against the last two blocks only, which the block
@@ -101,6 +102,7 @@ inline void reorthogonalize_block(Block_lanczos_state& state, Eigen::Index k, Ei
   R = correction * R;
 }
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -20,6 +20,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
 
 // The Rayleigh-Ritz check of the block Lanczos method and its schedule: the
 // eigenpairs of T approximate those of the operator on the subspace.
@@ -112,6 +113,7 @@ inline bool verify_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
   return true;
 }
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

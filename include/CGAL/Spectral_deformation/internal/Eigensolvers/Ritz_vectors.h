@@ -22,6 +22,9 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
+
+using Linear_algebra::dense_product;
 
 // The eigenvectors of the block Lanczos method, computed in place in the
 // memory of the subspace V, by panels of rows split between the threads.
@@ -136,6 +139,7 @@ inline bool ritz_vectors_in_place(Eigen::MatrixXd& V, Eigen::Index k, const Eige
   return orthonormalize_in_place(V, known_vectors.cols(), gram);
 }
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -13,6 +13,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
 
 // The shift of both eigensolvers: negative and small against the low end of
 // the spectrum (the first non-zero eigenvalue of a sphere of the same area is
@@ -33,6 +34,7 @@ inline Eigen::SparseMatrix<double> shifted_stiffness(const Eigen::SparseMatrix<d
   return shifted;
 }
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -23,6 +23,9 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
+
+using Memory::set_process_wide_tuning_if_supported;
 
 // Spectra's shift-invert Lanczos on the generalized problem Q h = lambda M h:
 // the solver of `Spectra_eigensolver_traits`, and the fallback of
@@ -150,6 +153,7 @@ bool spectra_shift_invert_eigenpairs(const Eigen::SparseMatrix<double>& stiffnes
   }
 }
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -15,6 +15,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Eigensolvers {
 
 /// The m smallest eigenpairs of `Q h = lambda M h`, `M = diag(mass)`, by a
 /// dense symmetric eigensolver: for the small problems where an iterative
@@ -40,6 +41,7 @@ inline bool dense_generalized_eigenpairs(const Eigen::SparseMatrix<double>& stif
   return true;
 }
 
+} // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

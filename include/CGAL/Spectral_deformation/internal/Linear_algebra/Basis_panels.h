@@ -20,6 +20,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Linear_algebra {
 
 /// A copy of a basis H (n×m) laid out for the two products of every
 /// iteration, S = H C and Hᵀ X with three columns: the rows are cut into
@@ -172,6 +173,7 @@ private:
   std::vector<Scalar> m_data;
 };
 
+} // namespace Linear_algebra
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

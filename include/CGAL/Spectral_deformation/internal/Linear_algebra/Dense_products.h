@@ -36,6 +36,7 @@ extern "C" void openblas_set_num_threads(int);
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Linear_algebra {
 
 typedef Eigen::Ref<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> Const_matrix_ref;
 typedef Eigen::Ref<Eigen::MatrixXd, 0, Eigen::OuterStride<>> Matrix_ref;
@@ -159,6 +160,7 @@ inline void threaded_dense_product(bool transpose_a, const Const_matrix_ref& A, 
   dense_product(transpose_a, A, transpose_b, B, alpha, beta, C);
 }
 
+} // namespace Linear_algebra
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

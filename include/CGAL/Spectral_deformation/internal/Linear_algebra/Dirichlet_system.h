@@ -18,6 +18,9 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Linear_algebra {
+
+using Memory::set_process_wide_tuning_if_supported;
 
 /// A symmetric positive semi-definite system A X = B in which some unknowns
 /// are prescribed: A is restricted to the free unknowns and factored once,
@@ -93,6 +96,7 @@ private:
   Eigen::SparseMatrix<double> m_coupling;
 };
 
+} // namespace Linear_algebra
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

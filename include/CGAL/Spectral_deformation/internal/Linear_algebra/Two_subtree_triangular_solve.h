@@ -22,6 +22,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Linear_algebra {
 
 // Solves L Lᵀ y = b with a simplicial Cholesky factor L (compressed columns,
 // rows sorted, diagonal first, columns in a postorder of the elimination
@@ -301,6 +302,7 @@ private:
   bool m_usable = false;
 };
 
+} // namespace Linear_algebra
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -18,6 +18,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Memory {
 
 // malloc, calloc and realloc that ask for transparent huge pages on the
 // blocks of 4 MiB and more. The blocks stay ordinary malloc blocks: `free`
@@ -141,6 +142,7 @@ private:
 #endif
 };
 
+} // namespace Memory
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

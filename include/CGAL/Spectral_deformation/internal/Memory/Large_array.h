@@ -18,6 +18,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Memory {
 
 /// An uninitialized array of trivially copyable values for work arrays of
 /// tens to hundreds of megabytes; its pages are only touched where written.
@@ -84,6 +85,7 @@ private:
   bool m_mapped = false;
 };
 
+} // namespace Memory
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -22,6 +22,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Memory {
 
 // Hints to the kernel about how to map memory the package is about to write
 // for the first time. A page fault per 4 KiB page dominated the first write
@@ -125,6 +126,7 @@ private:
   std::thread m_thread;
 };
 
+} // namespace Memory
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -13,6 +13,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Memory {
 
 // The opt-in to the tuning that changes state of the whole process.
 //
@@ -70,6 +71,7 @@ void set_process_wide_tuning_if_supported(Traits& traits, bool enabled)
   }
 }
 
+} // namespace Memory
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

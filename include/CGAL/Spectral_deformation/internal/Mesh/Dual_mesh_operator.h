@@ -22,6 +22,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Mesh {
 
 /// Dual Laplacian coordinates of a mesh at some positions, one row per dual
 /// vertex that has three dual neighbours.
@@ -297,6 +298,7 @@ private:
   std::vector<int> m_row_faces;
 };
 
+} // namespace Mesh
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

@@ -20,6 +20,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Mesh {
 
 /// The part of a mesh a deformation works on: the faces incident to a vertex
 /// of the region of interest, with local vertex indices, and what the
@@ -115,6 +116,7 @@ extract_region(const TriangleMesh& tm, const VertexIndex& id, const std::vector<
   return region;
 }
 
+} // namespace Mesh
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL

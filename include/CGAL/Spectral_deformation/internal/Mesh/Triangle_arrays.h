@@ -26,6 +26,7 @@
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
+namespace Mesh {
 
 typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Positions;
 typedef Eigen::Matrix<int, Eigen::Dynamic, 3> Triangles;
@@ -239,6 +240,7 @@ inline std::uint64_t fingerprint(const Triangle_arrays& mesh)
   return hash;
 }
 
+} // namespace Mesh
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
