@@ -14,11 +14,10 @@
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 #include <CGAL/Spectral_deformation/version.h>
-#include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Pipeline_selector.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Region_deformation.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Template_arguments.h>
-#include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Vertex_selection.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/Default.h>
@@ -27,15 +26,10 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 
-#include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <istream>
-#include <limits>
-#include <memory>
-#include <new>
 #include <ostream>
-#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -198,16 +192,16 @@ public:
   /// @}
 
 private:
-  typedef Spectral_deformation::internal::Mesh::Positions Positions;
-  typedef Spectral_deformation::internal::Mesh::Triangle_arrays Triangle_arrays;
   typedef Spectral_deformation_error Error;
-
-  typedef Spectral_deformation::internal::Deformation::Pipeline_selector<Algorithm_argument::value, Sparse_solver_traits,
-                                                            Spatial_solver_traits>
+  typedef Spectral_deformation::internal::Deformation::Pipeline_selector<Algorithm_argument::value,
+                                                                         Sparse_solver_traits, Spatial_solver_traits>
       Selector;
-  typedef typename Selector::type Pipeline;
   static constexpr bool is_spectral = Selector::is_spectral;
-  static constexpr const char* out_of_memory = "not enough memory (an allocation failed); nothing was changed";
+  typedef Spectral_deformation::internal::Deformation::Vertex_selection<TM, Vertex_index_map, Vertex_point_map>
+      Selection;
+  typedef Spectral_deformation::internal::Deformation::Region_deformation<Selection, typename Selector::type,
+                                                                          Eigensolver_traits, is_spectral>
+      Computation;
 
 public:
   /// The algorithm that `TAG` selects: `TAG` itself when it is a
@@ -225,15 +219,6 @@ public:
   /// `set_constraint_weight()`, `set_constraint_policy()`, the basis cache,
   /// ...) do not compile for an algorithm without basis.
   static constexpr bool has_basis = is_spectral;
-
-private:
-
-  // Everything that depends only on the ROI and the initial geometry.
-  struct Region : Spectral_deformation::internal::Mesh::Region<vertex_descriptor>
-  {
-    Pipeline pipeline;
-  };
-
 
 public:
   /// \name Construction
@@ -255,10 +240,8 @@ public:
                                     Vertex_index_map vertex_index_map,
                                     Hedge_index_map hedge_index_map,
                                     Vertex_point_map vertex_point_map)
-    : m_tm(triangle_mesh), m_vim(vertex_index_map), m_him(hedge_index_map), m_vpm(vertex_point_map)
-  {
-    init();
-  }
+    : m_selection(triangle_mesh, vertex_index_map, vertex_point_map), m_him(hedge_index_map)
+  {}
 
   /// Creates a deformation object for `triangle_mesh` with an initialized
   /// vertex index map, an initialized halfedge index map and the internal
@@ -319,17 +302,15 @@ public:
   /// Erases all the vertices from the region of interest (control vertices included).
   void clear_roi_vertices()
   {
-    m_roi.clear();
-    std::fill(m_is_roi.begin(), m_is_roi.end(), 0);
-    std::fill(m_is_control.begin(), m_is_control.end(), 0);
-    roi_changed();
+    m_selection.clear_roi();
+    m_computation.roi_changed();
   }
 
   /// Erases all the vertices from the set of control vertices.
   void clear_control_vertices()
   {
-    std::fill(m_is_control.begin(), m_is_control.end(), 0);
-    m_constraints_valid = false;
+    m_selection.clear_controls();
+    m_computation.constraints_changed();
   }
 
   /// Inserts `vd` in the set of control vertices, and in the ROI if needed
@@ -341,11 +322,9 @@ public:
   {
     if(is_control_vertex(vd))
       return false;
-    checked_id(vd);
     insert_roi_vertex(vd);
-    m_is_control[id(vd)] = 1;
-    m_target[id(vd)] = get(m_vpm, vd);
-    m_constraints_valid = false;
+    m_selection.insert_control(vd);
+    m_computation.constraints_changed();
     return true;
   }
 
@@ -362,10 +341,9 @@ public:
   /// Returns `true` if `vd` was a control vertex.
   bool erase_control_vertex(vertex_descriptor vd)
   {
-    if(!is_control_vertex(vd))
+    if(!m_selection.erase_control(vd))
       return false;
-    m_is_control[id(vd)] = 0;
-    m_constraints_valid = false;
+    m_computation.constraints_changed();
     return true;
   }
 
@@ -384,11 +362,9 @@ public:
   ///         a vertex of the mesh (null, removed, or an index out of range).
   bool insert_roi_vertex(vertex_descriptor vd)
   {
-    if(is_roi_vertex(vd))
+    if(!m_selection.insert_roi(vd))
       return false;
-    m_is_roi[checked_id(vd)] = 1;
-    m_roi.push_back(vd);
-    roi_changed();
+    m_computation.roi_changed();
     return true;
   }
 
@@ -397,12 +373,9 @@ public:
   /// position. Returns `true` if `vd` was in the ROI.
   bool erase_roi_vertex(vertex_descriptor vd)
   {
-    if(!is_roi_vertex(vd))
+    if(!m_selection.erase_roi(vd))
       return false;
-    erase_control_vertex(vd);
-    m_is_roi[id(vd)] = 0;
-    m_roi.erase(std::find(m_roi.begin(), m_roi.end(), vd));
-    roi_changed();
+    m_computation.roi_changed();
     return true;
   }
 
@@ -418,38 +391,7 @@ public:
   /// mesh (degenerate faces, non-manifold edges, ...), or a numerical step
   /// fails. The mesh is never modified by `preprocess()`, except that
   /// vertices erased from the ROI return to their initial positions.
-  bool preprocess()
-  {
-    if(m_region && m_constraints_valid && m_preprocess_report.success)
-    {
-      // Nothing to do: the report says so.
-      m_preprocess_report.region_rebuilt = false;
-      m_preprocess_report.basis_computed = false;
-      m_preprocess_report.region_seconds = 0;
-      m_preprocess_report.basis_seconds = 0;
-      m_preprocess_report.factorization_seconds = 0;
-      return true;
-    }
-    m_preprocess_report = Spectral_preprocess_report();
-    try
-    {
-      preprocess_or_throw();
-      m_preprocess_report.success = true;
-    }
-    catch(const Error& e)
-    {
-      m_preprocess_report.success = false;
-      m_preprocess_report.message = e.what();
-      m_constraints_valid = false;
-    }
-    catch(const std::bad_alloc&)
-    {
-      m_preprocess_report.success = false;
-      m_preprocess_report.message = out_of_memory;
-      m_constraints_valid = false;
-    }
-    return m_preprocess_report.success;
-  }
+  bool preprocess() { return m_computation.preprocess(m_selection); }
 
   /// @}
 
@@ -462,10 +404,8 @@ public:
   ///         `target_position` is not finite (the target is then unchanged).
   void set_target_position(vertex_descriptor vd, const Point& target_position)
   {
-    if(!is_control_vertex(vd))
-      return;
-    check_finite(target_position);
-    m_target[id(vd)] = target_position;
+    if(is_control_vertex(vd))
+      m_selection.set_target(vd, target_position);
   }
 
   /// Translates the target of the control vertex `vd` by `t`; does nothing
@@ -478,7 +418,7 @@ public:
   {
     if(!is_control_vertex(vd))
       return;
-    const Point& p = m_target[id(vd)];
+    const Point& p = m_selection.target(vd);
     set_target_position(vd, Point(p[0] + t[0], p[1] + t[1], p[2] + t[2]));
   }
 
@@ -503,7 +443,7 @@ public:
   {
     if(!is_control_vertex(vd))
       return;
-    const Point& p = m_target[id(vd)];
+    const Point& p = m_selection.target(vd);
     const Vect relative(p[0] - to_rotation_center[0], p[1] - to_rotation_center[1],
                         p[2] - to_rotation_center[2]);
     const Vect v = quat * relative;
@@ -526,7 +466,7 @@ public:
   const Point& target_position(vertex_descriptor vd)
   {
     CGAL_precondition(is_control_vertex(vd));
-    return m_target[checked_id(vd)];
+    return m_selection.target(vd);
   }
 
   /// @}
@@ -547,54 +487,15 @@ public:
   /// vertices are only written when the deformation succeeds; a numerical
   /// failure (non-finite values, a diverging iteration, a degenerate face of
   /// the smooth deformed mesh) leaves the mesh unchanged.
-  void deform(unsigned int iterations, double tolerance)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    m_deform_report = Spectral_deformation_report();
-    if(!preprocess())
-    {
-      m_deform_report.message = "preprocess() failed: " + m_preprocess_report.message;
-      return;
-    }
-    try
-    {
-      Region& region = *m_region;
-      const Positions targets = constrained_targets();
-      Positions result;
-      region.pipeline.deform(region, m_constraints, targets, std::max(1u, iterations), tolerance, result,
-                             m_deform_report);
-      report_residuals(result, targets);
-      write_result(result);
-      // The iteration state changes only with the mesh.
-      region.pipeline.accept();
-      m_deform_report.success = true;
-    }
-    catch(const Error& e)
-    {
-      m_deform_report.success = false;
-      m_deform_report.message = e.what();
-    }
-    catch(const std::bad_alloc&)
-    {
-      m_deform_report.success = false;
-      m_deform_report.message = out_of_memory;
-    }
-    m_deform_report.total_seconds = Spectral_deformation::internal::Deformation::seconds_since(start);
-  }
+  void deform(unsigned int iterations, double tolerance) { m_computation.deform(m_selection, iterations, tolerance); }
 
   /// Puts the vertices of the ROI back at their initial positions, resets the
   /// targets of the control vertices to them, and restarts the iteration.
   /// The region (and its basis) is kept.
   void reset()
   {
-    for(vertex_descriptor vd : m_roi)
-    {
-      put(m_vpm, vd, m_original[id(vd)]);
-      if(is_control_vertex(vd))
-        m_target[id(vd)] = m_original[id(vd)];
-    }
-    if(m_region)
-      m_region->pipeline.restart();
+    m_selection.reset_to_original();
+    m_computation.restart();
   }
 
   /// Makes the current positions of the ROI vertices their initial
@@ -603,10 +504,8 @@ public:
   /// rebuilt by the next `preprocess()`.
   void overwrite_initial_geometry()
   {
-    for(vertex_descriptor vd : m_roi)
-      m_original[id(vd)] = get(m_vpm, vd);
-    m_region.reset();
-    m_constraints_valid = false;
+    m_selection.overwrite_original();
+    m_computation.drop_region();
   }
 
   /// @}
@@ -636,7 +535,7 @@ public:
   void set_sre_arap_alpha(double alpha) { CGAL_USE(alpha); }
 
   /// The number of frequencies `m` of the basis (default 100).
-  std::size_t number_of_frequencies() const { return m_settings.frequencies; }
+  std::size_t number_of_frequencies() const { return m_computation.settings().frequencies; }
   /// Sets the number of frequencies; a region with fewer vertices uses all of
   /// them. A different value makes the next `preprocess()` rebuild the
   /// region, basis included. Does not compile with `SPATIAL_DUAL_LAPLACIAN`.
@@ -646,15 +545,14 @@ public:
     static_assert(is_spectral, "set_number_of_frequencies(): SPATIAL_DUAL_LAPLACIAN has no basis");
     if(m == 0)
       throw Error(Error::INVALID_ARGUMENT, "the number of frequencies must be positive");
-    if(m != m_settings.frequencies)
+    if(m != m_computation.settings().frequencies)
     {
-      m_settings.frequencies = m;
-      m_region.reset();
-      m_constraints_valid = false;
+      m_computation.settings().frequencies = m;
+      m_computation.drop_region();
     }
   }
   /// The weight `w` of the constraints in the reduced least squares system (default 1).
-  double constraint_weight() const { return m_settings.weight; }
+  double constraint_weight() const { return m_computation.settings().weight; }
   /// Sets the constraint weight, a change of the constraint set. Larger
   /// weights meet the constraints of the smooth mesh more closely but the
   /// truncated basis cannot form sharp transitions, which degrades the
@@ -666,20 +564,20 @@ public:
     static_assert(is_spectral, "set_constraint_weight(): SPATIAL_DUAL_LAPLACIAN has no constraint weight");
     if(!(w > 0 && std::isfinite(w)))
       throw Error(Error::INVALID_ARGUMENT, "the constraint weight must be positive and finite");
-    m_settings.weight = w;
-    m_constraints_valid = false;
+    m_computation.settings().weight = w;
+    m_computation.constraints_changed();
   }
   /// The constraint policy (default `EXACT_CONSTRAINTS`).
-  Spectral_constraint_policy constraint_policy() const { return m_settings.policy; }
+  Spectral_constraint_policy constraint_policy() const { return m_computation.settings().policy; }
   /// Sets the constraint policy; a different policy is a change of the
   /// constraint set. Does not compile with `SPATIAL_DUAL_LAPLACIAN`.
   void set_constraint_policy(Spectral_constraint_policy policy)
   {
     static_assert(is_spectral, "set_constraint_policy(): SPATIAL_DUAL_LAPLACIAN always meets the constraints exactly");
-    if(policy != m_settings.policy)
+    if(policy != m_computation.settings().policy)
     {
-      m_settings.policy = policy;
-      m_constraints_valid = false;
+      m_computation.settings().policy = policy;
+      m_computation.constraints_changed();
     }
   }
   /// Sets the eigensolver used when a basis is next computed; a basis already
@@ -687,11 +585,11 @@ public:
   void set_eigensolver_traits(const Eigensolver_traits& traits)
   {
     static_assert(is_spectral, "set_eigensolver_traits(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_eigensolver = traits;
+    m_computation.eigensolver() = traits;
   }
   /// Whether `deform()` reads its copy of the basis in single precision
   /// (default `false`).
-  bool single_precision_basis() const { return m_settings.single_precision_basis; }
+  bool single_precision_basis() const { return m_computation.settings().single_precision_basis; }
   /// Stores the copy of the basis that every iteration of `deform()` reads
   /// in float (4 n m bytes instead of 8 n m); the arithmetic stays in double.
   /// Not the default: the reduced systems amplify the rounding of the copy,
@@ -701,14 +599,12 @@ public:
   void set_single_precision_basis(bool single)
   {
     static_assert(is_spectral, "set_single_precision_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_settings.single_precision_basis = single;
-    if(m_region)
-      m_region->pipeline.set_single_precision(single);
+    m_computation.set_single_precision(single);
   }
 
   /// The number of rotation patches of the iteration (default 0: one
   /// rotation per dual vertex, the full iteration of the paper).
-  std::size_t rotation_patches() const { return m_settings.rotation_patches; }
+  std::size_t rotation_patches() const { return m_computation.settings().rotation_patches; }
   /// Groups the dual vertices of the region into about `count` patches of
   /// neighbouring faces that turn by one rotation each in the iterations of
   /// `deform()`. Each iteration then costs O(m × count) instead of two
@@ -719,9 +615,7 @@ public:
   void set_rotation_patches(std::size_t count)
   {
     static_assert(is_spectral, "set_rotation_patches(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_settings.rotation_patches = count;
-    if(m_region)
-      m_region->pipeline.set_rotation_patches(count);
+    m_computation.set_rotation_patches(count);
   }
 
   /// @}
@@ -740,13 +634,7 @@ public:
   void set_basis(const Manifold_harmonics_basis<TM, EigensolverTraits>& basis)
   {
     static_assert(is_spectral, "set_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_supplied_basis = basis.data();
-    if(m_region && !m_region->pipeline.basis().empty() &&
-       m_supplied_basis.fingerprint != m_region->pipeline.basis().fingerprint)
-    {
-      m_region.reset();
-      m_constraints_valid = false;
-    }
+    m_computation.supply_basis(basis.data(), true);
   }
 
   /// Writes the basis of the current region in the format of
@@ -756,9 +644,7 @@ public:
   void save_basis(std::ostream& os) const
   {
     static_assert(is_spectral, "save_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    if(!m_region || m_region->pipeline.basis().empty())
-      throw Error(Error::IO_ERROR, "save_basis: no basis yet, call preprocess() first");
-    Spectral_deformation::internal::Basis::write_basis(os, m_region->pipeline.basis());
+    m_computation.save_basis(os);
   }
 
   /// Reads a basis written by `save_basis()` (or by
@@ -772,11 +658,7 @@ public:
   void load_basis(std::istream& is)
   {
     static_assert(is_spectral, "load_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    Spectral_deformation::internal::Basis::Basis_data data = Spectral_deformation::internal::Basis::read_basis(is);
-    Spectral_deformation::internal::Basis::check_basis_matches(data, extract_region().arrays);
-    m_supplied_basis = std::move(data);
-    m_region.reset();
-    m_constraints_valid = false;
+    m_computation.load_basis(is, m_selection);
   }
 
   /// @}
@@ -785,9 +667,9 @@ public:
   /// @{
 
   /// What the last `preprocess()` did.
-  const Spectral_preprocess_report& preprocess_report() const { return m_preprocess_report; }
+  const Spectral_preprocess_report& preprocess_report() const { return m_computation.preprocess_report(); }
   /// What the last `deform()` did.
-  const Spectral_deformation_report& deform_report() const { return m_deform_report; }
+  const Spectral_deformation_report& deform_report() const { return m_computation.deform_report(); }
 
   /// The smooth rest position of `vd`, the second shape of the paper's
   /// pipeline figure: its low-pass reconstruction \f$ H H^\top M V \f$ with
@@ -795,11 +677,11 @@ public:
   /// the region, when no region is built, or with `SPATIAL_DUAL_LAPLACIAN`.
   Point smoothed_rest_point(vertex_descriptor vd) const
   {
-    const int i = local_index(vd);
+    const int i = m_computation.local_index(m_selection, vd);
     if constexpr(is_spectral)
       if(i >= 0)
-        return to_point(m_region->pipeline.smooth_rest(i));
-    return m_original[id(vd)];
+        return to_point(m_computation.pipeline().smooth_rest(i));
+    return m_selection.original(vd);
   }
 
   /// The smooth deformed position of `vd` after the last successful
@@ -809,11 +691,11 @@ public:
   /// built, or with `SPATIAL_DUAL_LAPLACIAN`.
   Point smoothed_deformed_point(vertex_descriptor vd) const
   {
-    const int i = local_index(vd);
+    const int i = m_computation.local_index(m_selection, vd);
     if constexpr(is_spectral)
       if(i >= 0)
-        return to_point(m_region->pipeline.smooth_deformed(i));
-    return m_original[id(vd)];
+        return to_point(m_computation.pipeline().smooth_deformed(i));
+    return m_selection.original(vd);
   }
 
   /// @}
@@ -822,220 +704,28 @@ public:
   /// @{
 
   /// The vertices of the ROI.
-  const Roi_vertex_range& roi_vertices() const { return m_roi; }
+  const Roi_vertex_range& roi_vertices() const { return m_selection.roi(); }
   /// Whether `vd` is in the ROI.
-  bool is_roi_vertex(vertex_descriptor vd) const { return has_index(vd) && m_is_roi[id(vd)] != 0; }
+  bool is_roi_vertex(vertex_descriptor vd) const { return m_selection.is_roi(vd); }
   /// Whether `vd` is a control vertex.
-  bool is_control_vertex(vertex_descriptor vd) const
-  {
-    return has_index(vd) && m_is_control[id(vd)] != 0;
-  }
+  bool is_control_vertex(vertex_descriptor vd) const { return m_selection.is_control(vd); }
   /// The mesh being deformed.
-  const Triangle_mesh& triangle_mesh() const { return m_tm; }
+  const Triangle_mesh& triangle_mesh() const { return m_selection.mesh(); }
   /// The vertex index map.
-  const Vertex_index_map& vertex_index_map() const { return m_vim; }
+  const Vertex_index_map& vertex_index_map() const { return m_selection.vertex_index_map(); }
   /// The halfedge index map (not used by the deformation).
   Hedge_index_map hedge_index_map() const { return m_him; }
 
   /// @}
 
 private:
-  void init()
-  {
-    const std::size_t n = static_cast<std::size_t>(num_vertices(m_tm));
-    m_is_roi.assign(n, 0);
-    m_is_control.assign(n, 0);
-    m_original.resize(n);
-    std::vector<char> seen(n, 0);
-    for(vertex_descriptor vd : vertices(m_tm))
-    {
-      const std::size_t i = id(vd);
-      if(i >= n || seen[i])
-        throw Error(Error::INVALID_MESH,
-                    "the vertex index map is not a bijection onto [0, number of vertices) "
-                    "(for a Surface_mesh with removed elements, call collect_garbage() first)");
-      seen[i] = 1;
-      m_original[i] = get(m_vpm, vd);
-    }
-    m_target = m_original;
-    m_is_vertex.swap(seen); // removed, not collected, vertices are not vertices
-  }
-
-  // The index of `vd`, or an exception when `vd` is not a vertex of the mesh
-  // as it was at construction.
-  std::size_t checked_id(vertex_descriptor vd) const
-  {
-    if(!has_index(vd))
-      throw Error(Error::INVALID_ARGUMENT, "the vertex is not a vertex of the mesh");
-    return id(vd);
-  }
-
-  bool has_index(vertex_descriptor vd) const
-  {
-    return vd != boost::graph_traits<TM>::null_vertex() && id(vd) < m_is_roi.size() &&
-           m_is_vertex[id(vd)] != 0;
-  }
-
-  std::size_t id(vertex_descriptor vd) const { return static_cast<std::size_t>(get(m_vim, vd)); }
-
-  int local_index(vertex_descriptor vd) const
-  {
-    return m_region ? m_region->local[id(vd)] : -1;
-  }
-
   static Point to_point(const Eigen::RowVector3d& x) { return Point(x[0], x[1], x[2]); }
 
-  static void check_finite(const Point& p)
-  {
-    if(!(std::isfinite(CGAL::to_double(p[0])) && std::isfinite(CGAL::to_double(p[1])) &&
-         std::isfinite(CGAL::to_double(p[2]))))
-      throw Error(Error::INVALID_ARGUMENT, "a target position is not finite");
-  }
-
-  void roi_changed()
-  {
-    if(m_region)
-      m_previous_region_vertices = m_region->vertices;
-    m_region.reset();
-    m_constraints_valid = false;
-  }
-
-  // The faces incident to ROI vertices, with local vertex indices in the
-  // order of the vertex index map; validated.
-  Spectral_deformation::internal::Mesh::Region<vertex_descriptor> extract_region() const
-  {
-    return Spectral_deformation::internal::Mesh::extract_region(
-        m_tm, [this](vertex_descriptor vd) { return id(vd); }, m_is_roi, m_original);
-  }
-
-  void build_region()
-  {
-    const auto start = std::chrono::steady_clock::now();
-    std::unique_ptr<Region> region(new Region());
-    static_cast<Spectral_deformation::internal::Mesh::Region<vertex_descriptor>&>(*region) = extract_region();
-    if constexpr(is_spectral)
-      region->pipeline.build(*region, m_supplied_basis, m_settings, m_eigensolver, m_preprocess_report);
-    else
-      region->pipeline.build(*region);
-    m_region = std::move(region);
-    m_preprocess_report.region_rebuilt = true;
-    m_preprocess_report.region_seconds = Spectral_deformation::internal::Deformation::seconds_since(start);
-  }
-
-  void preprocess_or_throw()
-  {
-    if(static_cast<std::size_t>(num_vertices(m_tm)) != m_is_roi.size())
-      throw Error(Error::INVALID_MESH, "the number of vertices of the mesh changed since the "
-                                       "construction of the deformation object");
-    if(m_roi.empty())
-      throw Error(Error::INVALID_ARGUMENT, "the region of interest is empty");
-    if(!m_region)
-    {
-      // Vertices that left the ROI go back to their initial positions.
-      for(vertex_descriptor vd : m_previous_region_vertices)
-        if(!is_roi_vertex(vd))
-          put(m_vpm, vd, m_original[id(vd)]);
-      m_previous_region_vertices.clear();
-      build_region();
-    }
-    Region& region = *m_region;
-    // A control vertex of no face is not in the region: its target could not
-    // be met. (An isolated ROI vertex without a target just stays put.)
-    for(std::size_t i = 0; i < m_is_control.size(); ++i)
-      if(m_is_control[i] && region.local[i] < 0)
-        throw Error(Error::INVALID_MESH, "control vertex " + std::to_string(i) + " belongs to no face");
-    m_preprocess_report.number_of_region_vertices = region.vertices.size();
-    if constexpr(is_spectral)
-      m_preprocess_report.number_of_frequencies = region.pipeline.number_of_frequencies();
-
-    m_constraints = Spectral_deformation::internal::Deformation::make_constraint_set(
-        region, [this, &region](std::size_t i) { return is_control_vertex(region.vertices[i]); });
-    m_preprocess_report.number_of_constrained_vertices = m_constraints.size();
-
-    const auto start = std::chrono::steady_clock::now();
-    if constexpr(is_spectral)
-      region.pipeline.prepare(region, m_constraints, m_settings);
-    else
-      region.pipeline.prepare(region, m_constraints);
-    m_preprocess_report.factorization_seconds = Spectral_deformation::internal::Deformation::seconds_since(start);
-    m_constraints_valid = true;
-  }
-
-  // Targets of the constrained vertices (k×3): initial positions for the
-  // fixed ring, the user's targets for the control vertices.
-  Positions constrained_targets() const
-  {
-    const Region& region = *m_region;
-    const std::vector<int>& constrained = m_constraints.constrained;
-    Positions targets(static_cast<Eigen::Index>(constrained.size()), 3);
-    for(std::size_t k = 0; k < constrained.size(); ++k)
-    {
-      const std::size_t i = static_cast<std::size_t>(constrained[k]);
-      const vertex_descriptor vd = region.vertices[i];
-      const Point& p = region.is_fixed[i] ? m_original[id(vd)] : m_target[id(vd)];
-      targets.row(static_cast<Eigen::Index>(k)) << CGAL::to_double(p[0]), CGAL::to_double(p[1]),
-          CGAL::to_double(p[2]);
-    }
-    if(!targets.allFinite())
-      throw Error(Error::INVALID_ARGUMENT, "a target position is not finite");
-    return targets;
-  }
-
-  void report_residuals(const Positions& result, const Positions& targets)
-  {
-    double max_residual = 0, sum = 0;
-    std::size_t count = 0;
-    for(std::size_t k = 0; k < m_constraints.size(); ++k)
-    {
-      const int i = m_constraints.constrained[k];
-      if(m_region->is_fixed[static_cast<std::size_t>(i)])
-        continue;
-      const double d = (result.row(i) - targets.row(static_cast<Eigen::Index>(k))).norm();
-      max_residual = std::max(max_residual, d);
-      sum += d * d;
-      ++count;
-    }
-    const double diagonal = m_region->diagonal > 0 ? m_region->diagonal : 1.0;
-    m_deform_report.max_control_residual = max_residual / diagonal;
-    m_deform_report.rms_control_residual = count ? std::sqrt(sum / double(count)) / diagonal : 0.0;
-  }
-
-  // Only ROI vertices are written; the fixed ring never moves.
-  void write_result(const Positions& result)
-  {
-    if(!result.allFinite())
-      throw Error(Error::SOLVER_FAILURE, "the deformation produced non-finite positions");
-    const Region& region = *m_region;
-    for(std::size_t i = 0; i < region.vertices.size(); ++i)
-      if(!region.is_fixed[i])
-        put(m_vpm, region.vertices[i], to_point(result.row(static_cast<Eigen::Index>(i))));
-  }
-
-  Triangle_mesh& m_tm;
-  Vertex_index_map m_vim;
+  Selection m_selection;
   Hedge_index_map m_him;
-  Vertex_point_map m_vpm;
-
-  std::vector<Point> m_original;
-  std::vector<Point> m_target;
-  Roi_vertex_range m_roi;
-  std::vector<char> m_is_roi;
-  std::vector<char> m_is_control;
-  std::vector<char> m_is_vertex;
-  std::vector<vertex_descriptor> m_previous_region_vertices;
-
+  Computation m_computation;
   unsigned int m_iterations = 10;
   double m_tolerance = 1e-4;
-  Spectral_deformation::internal::Deformation::Spectral_settings m_settings;
-  Eigensolver_traits m_eigensolver;
-  Spectral_deformation::internal::Basis::Basis_data m_supplied_basis;
-
-  std::unique_ptr<Region> m_region;
-  bool m_constraints_valid = false;
-  Spectral_deformation::internal::Deformation::Constraint_set m_constraints;
-
-  Spectral_preprocess_report m_preprocess_report;
-  Spectral_deformation_report m_deform_report;
 };
 
 } // namespace CGAL
