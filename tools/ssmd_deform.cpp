@@ -391,6 +391,7 @@ private:
     std::unique_ptr<Deformation> deformation(new Deformation(mesh));
     deformation->set_iterations(m_options.iterations);
     deformation->set_tolerance(m_options.tolerance);
+    deformation->set_process_wide_tuning(true); // this program owns its process
     if constexpr(Deformation::has_basis)
     {
       deformation->set_number_of_frequencies(m_options.frequencies);

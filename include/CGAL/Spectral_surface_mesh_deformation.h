@@ -618,6 +618,19 @@ public:
     m_computation.set_rotation_patches(count);
   }
 
+  /// Whether the solvers of this object may change state of the whole
+  /// process to run faster (default `false`): the thread count of OpenBLAS,
+  /// huge pages, SuiteSparse's allocator during a factorization (see
+  /// `Block_lanczos_eigensolver_traits::set_process_wide_tuning()` and
+  /// `Cholmod_llt_solver_traits::set_process_wide_tuning()`). With the
+  /// spectral algorithms it is the setting of the eigensolver traits.
+  bool process_wide_tuning() const { return m_computation.process_wide_tuning(); }
+  /// Sets `process_wide_tuning()`, for programs that own their process; it
+  /// applies to the eigensolver traits (when they have the option) and to the
+  /// sparse solvers of the detail transfer or of the spatial solver. The
+  /// region is rebuilt, basis included, by the next `preprocess()`.
+  void set_process_wide_tuning(bool enabled) { m_computation.set_process_wide_tuning(enabled); }
+
   /// @}
 
   /// \name Basis cache

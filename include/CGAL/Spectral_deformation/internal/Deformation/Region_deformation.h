@@ -13,6 +13,7 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Spectral_pipeline.h>
+#include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 
 #include <CGAL/number_utils.h>
@@ -60,6 +61,28 @@ public:
   Spectral_settings& settings() { return m_settings; }
   const Spectral_settings& settings() const { return m_settings; }
   EigensolverTraits& eigensolver() { return m_eigensolver; }
+
+  /// Whether the solvers may change process-wide state: the spectral
+  /// pipelines follow the eigensolver traits (which hand the choice on to the
+  /// detail transfer), the spatial one this flag.
+  bool process_wide_tuning() const
+  {
+    if constexpr(is_spectral)
+      return Memory::process_wide_tuning_of(m_eigensolver);
+    else
+      return m_process_wide_tuning;
+  }
+
+  /// Takes effect when the region is next built (the spectral pipelines:
+  /// when the eigensolver traits support the option).
+  void set_process_wide_tuning(bool enabled)
+  {
+    if(enabled == m_process_wide_tuning && enabled == process_wide_tuning())
+      return;
+    Memory::set_process_wide_tuning_if_supported(m_eigensolver, enabled);
+    m_process_wide_tuning = enabled;
+    drop_region();
+  }
 
   const Spectral_preprocess_report& preprocess_report() const { return m_preprocess_report; }
   const Spectral_deformation_report& deform_report() const { return m_deform_report; }
@@ -217,7 +240,7 @@ private:
     if constexpr(is_spectral)
       region->pipeline.build(*region, m_supplied_basis, m_settings, m_eigensolver, m_preprocess_report);
     else
-      region->pipeline.build(*region);
+      region->pipeline.build(*region, m_process_wide_tuning);
     m_region = std::move(region);
     m_preprocess_report.region_rebuilt = true;
     m_preprocess_report.region_seconds = seconds_since(start);
@@ -319,6 +342,7 @@ private:
   EigensolverTraits m_eigensolver;
   Basis_data m_supplied_basis;
   std::vector<vertex_descriptor> m_previous_region_vertices;
+  bool m_process_wide_tuning = false;
 
   std::unique_ptr<Region> m_region;
   bool m_constraints_valid = false;

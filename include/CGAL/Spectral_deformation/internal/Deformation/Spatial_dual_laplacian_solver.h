@@ -60,6 +60,14 @@ public:
                                        m_number_of_components);
   }
 
+  /// Lets the sparse solvers change process-wide state to run faster
+  /// (`SparseSPDSolverTraits::set_process_wide_tuning()`, when it has it).
+  void set_process_wide_tuning(bool enabled)
+  {
+    m_hard_system.set_process_wide_tuning(enabled);
+    Memory::set_process_wide_tuning_if_supported(m_solver, enabled);
+  }
+
   const Dual_mesh_operator& dual_mesh() const { return m_dual; }
   const Dual_coordinates& rest_coordinates() const { return m_rest_coordinates; }
   double bounding_box_diagonal() const { return m_diagonal; }

@@ -34,9 +34,11 @@ template <class SparseSPDSolverTraits>
 class Spatial_pipeline
 {
 public:
-  void build(const Region_geometry& region)
+  /// `process_wide_tuning`: see `Spatial_dual_laplacian_solver::set_process_wide_tuning()`.
+  void build(const Region_geometry& region, bool process_wide_tuning)
   {
     m_solver.reset(new Spatial_dual_laplacian_solver<SparseSPDSolverTraits>(region.arrays));
+    m_solver->set_process_wide_tuning(process_wide_tuning);
     m_has_solution = false;
   }
 
