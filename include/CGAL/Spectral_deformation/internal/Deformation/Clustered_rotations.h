@@ -31,31 +31,11 @@ using Mesh::Dual_mesh_operator;
 using Mesh::Positions;
 using Mesh::Triangles;
 
-/// Groups the rows of `dual` (the dual vertices with three neighbours) into
-/// about `count` patches of neighbouring faces: seeds spread by farthest
-/// point sampling of the face centroids (on a regular subsample of them),
-/// then grown breadth first over the dual graph, so that a patch never jumps
-/// across a gap between two parts of the surface. A part of the surface that
-/// no seed reaches is a patch of its own. Returns the patch of each row,
-/// numbered from 0 without gaps; `count` at least the number of rows gives
-/// every row its own patch.
-inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const Positions& centroids,
-                                          std::size_t count)
+/// About `count` faces spread over the surface: farthest point sampling of
+/// the face `centroids` over a regular subsample of the faces, so that the
+/// cost stays count × candidates whatever the size of the mesh.
+inline std::vector<int> farthest_point_seeds(const Positions& centroids, std::size_t faces, std::size_t count)
 {
-  const std::vector<int>& row_faces = dual.row_faces();
-  const std::size_t rows = row_faces.size();
-  std::vector<int> result(rows, 0);
-  if(count >= rows)
-  {
-    for(std::size_t r = 0; r < rows; ++r)
-      result[r] = static_cast<int>(r);
-    return result;
-  }
-  count = (std::max<std::size_t>)(count, 1);
-  const std::size_t faces = static_cast<std::size_t>(dual.number_of_faces());
-
-  // Farthest point sampling over a regular subsample: the cost stays
-  // count × candidates, whatever the size of the mesh.
   const std::size_t candidate_count = (std::min)(faces, 32 * count);
   const std::size_t stride = faces / candidate_count;
   std::vector<int> candidates(candidate_count);
@@ -83,8 +63,17 @@ inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const 
     if(!(farthest > 0))
       break;
   }
+  return seeds;
+}
 
-  std::vector<int> patch_of_face(faces, -1);
+/// The patch of every face of `dual`: the patches grow breadth first from
+/// the `seeds` over the dual graph; a part of the surface that no seed
+/// reaches becomes a patch of its own. Returns the number of patches.
+inline int grow_patches(const Dual_mesh_operator& dual, const std::vector<int>& seeds,
+                        std::vector<int>& patch_of_face)
+{
+  const std::size_t faces = static_cast<std::size_t>(dual.number_of_faces());
+  patch_of_face.assign(faces, -1);
   std::vector<int> queue;
   queue.reserve(faces);
   int patches = 0;
@@ -119,6 +108,34 @@ inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const 
       queue.push_back(static_cast<int>(f));
       grow();
     }
+  return patches;
+}
+
+/// Groups the rows of `dual` (the dual vertices with three neighbours) into
+/// about `count` patches of neighbouring faces: seeds spread by farthest
+/// point sampling of the face centroids (on a regular subsample of them),
+/// then grown breadth first over the dual graph, so that a patch never jumps
+/// across a gap between two parts of the surface. A part of the surface that
+/// no seed reaches is a patch of its own. Returns the patch of each row,
+/// numbered from 0 without gaps; `count` at least the number of rows gives
+/// every row its own patch.
+inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const Positions& centroids,
+                                          std::size_t count)
+{
+  const std::vector<int>& row_faces = dual.row_faces();
+  const std::size_t rows = row_faces.size();
+  std::vector<int> result(rows, 0);
+  if(count >= rows)
+  {
+    for(std::size_t r = 0; r < rows; ++r)
+      result[r] = static_cast<int>(r);
+    return result;
+  }
+  count = (std::max<std::size_t>)(count, 1);
+  const std::vector<int> seeds =
+      farthest_point_seeds(centroids, static_cast<std::size_t>(dual.number_of_faces()), count);
+  std::vector<int> patch_of_face;
+  const int patches = grow_patches(dual, seeds, patch_of_face);
 
   // Only the rows carry rotations: number the patches that hold a row.
   std::vector<int> renumbered(static_cast<std::size_t>(patches), -1);
@@ -170,31 +187,85 @@ public:
     if(patches == 0)
       return;
 
-    // Rows in the order of their patches.
-    std::vector<int> start(static_cast<std::size_t>(patches) + 1, 0);
+    std::vector<int> start, rows_by_patch;
+    sort_rows_by_patch(patch_of_row, patches, start, rows_by_patch);
+    const std::vector<std::vector<Contribution>> gathered =
+        gather_contributions(dual, weights, coordinates, smooth_rest, start, rows_by_patch, basis.rows());
+    accumulate_products(basis, gathered);
+  }
+
+  int number_of_patches() const { return m_patches; }
+
+  /// `rhs` (m×3) = Σ_C K_C R_Cᵀ for the rotations of the patches at the
+  /// shape H `coefficients`.
+  void evaluate(const Eigen::MatrixXd& coefficients, Eigen::MatrixXd& rhs) const
+  {
+    rhs.setZero(m_K.rows(), 3);
+    int threads = 1;
+#ifdef _OPENMP
+    // The two products read 6 m × patches numbers: worth a team from a few
+    // hundred patches on.
+    if(static_cast<double>(m_patches) * static_cast<double>(m_K.rows()) > 2e4)
+      threads = (std::min)(omp_get_max_threads(), (m_patches + 63) / 64);
+#endif
+    m_partial.resize(static_cast<std::size_t>(threads));
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if(threads > 1)
+#endif
+    {
+      int thread = 0;
+#ifdef _OPENMP
+      thread = omp_get_thread_num();
+#endif
+      const int first = static_cast<int>(static_cast<long>(m_patches) * thread / threads);
+      const int last = static_cast<int>(static_cast<long>(m_patches) * (thread + 1) / threads);
+      evaluate_patches(coefficients, first, last, m_partial[static_cast<std::size_t>(thread)]);
+    }
+    for(const Eigen::MatrixXd& part : m_partial)
+      rhs += part;
+  }
+
+private:
+  // What the rows of one patch put on one vertex.
+  struct Contribution
+  {
+    int vertex;
+    int patch;
+    Eigen::RowVector3d load, edge;
+  };
+
+  // The rows in the order of their patches: those of patch p are
+  // rows_by_patch[start[p], start[p + 1]).
+  static void sort_rows_by_patch(const std::vector<int>& patch_of_row, int patches, std::vector<int>& start,
+                                 std::vector<int>& rows_by_patch)
+  {
+    start.assign(static_cast<std::size_t>(patches) + 1, 0);
     for(int p : patch_of_row)
       ++start[static_cast<std::size_t>(p) + 1];
     for(std::size_t i = 1; i < start.size(); ++i)
       start[i] += start[i - 1];
-    std::vector<int> rows_by_patch(patch_of_row.size());
-    {
-      std::vector<int> fill(start.begin(), start.end() - 1);
-      for(std::size_t r = 0; r < patch_of_row.size(); ++r)
-        rows_by_patch[static_cast<std::size_t>(fill[static_cast<std::size_t>(patch_of_row[r])]++)] =
-            static_cast<int>(r);
-    }
+    rows_by_patch.resize(patch_of_row.size());
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for(std::size_t r = 0; r < patch_of_row.size(); ++r)
+      rows_by_patch[static_cast<std::size_t>(fill[static_cast<std::size_t>(patch_of_row[r])]++)] =
+          static_cast<int>(r);
+  }
 
+  // Per patch, the vertex rows of (L̂F)ᵀ [l̄_r] and of the edge covariance
+  // operator, gathered sparsely (one list per thread). The products with H
+  // then run over the vertices in order, because a row of the column-major
+  // n×m basis is m scattered numbers: read patch by patch, the rows of a
+  // large mesh missed the cache and the TLB at every number.
+  static std::vector<std::vector<Contribution>>
+  gather_contributions(const Dual_mesh_operator& dual, const Eigen::Matrix<double, Eigen::Dynamic, 3>& weights,
+                       const Positions& coordinates, const Positions& smooth_rest, const std::vector<int>& start,
+                       const std::vector<int>& rows_by_patch, Eigen::Index n)
+  {
+    const int patches = static_cast<int>(start.size()) - 1;
     const Positions rest_centroids = dual.centroids(smooth_rest);
     const Triangles& triangles = dual.triangles();
     const Triangles& neighbours = dual.neighbours();
     const std::vector<int>& row_faces = dual.row_faces();
-    const Eigen::Index n = basis.rows();
-
-    // Per patch, the vertex rows of (L̂F)ᵀ [l̄_r] and of the edge covariance
-    // operator are gathered sparsely; the products with H then run over the
-    // vertices in order, because a row of the column-major n×m basis is m
-    // scattered numbers: read patch by patch, the rows of a large mesh
-    // missed the cache and the TLB at every number.
     std::vector<std::vector<Contribution>> gathered;
 #ifdef _OPENMP
 #pragma omp parallel if(patches > 64)
@@ -255,9 +326,14 @@ public:
         touched.clear();
       }
     }
+    return gathered;
+  }
 
-    // The contributions in the order of their vertices (a counting sort),
-    // then one pass over the rows of H.
+  // K and P: the contributions in the order of their vertices (a counting
+  // sort), then one pass over the rows of H.
+  void accumulate_products(const Eigen::MatrixXd& basis, const std::vector<std::vector<Contribution>>& gathered)
+  {
+    const Eigen::Index n = basis.rows();
     std::vector<int> first(static_cast<std::size_t>(n) + 1, 0);
     for(const std::vector<Contribution>& part : gathered)
       for(const Contribution& c : part)
@@ -271,7 +347,7 @@ public:
         for(const Contribution& c : part)
           by_vertex[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.vertex)]++)] = &c;
     }
-    Eigen::VectorXd h(m);
+    Eigen::VectorXd h(basis.cols());
     for(Eigen::Index v = 0; v < n; ++v)
     {
       const int begin = first[static_cast<std::size_t>(v)], end = first[static_cast<std::size_t>(v) + 1];
@@ -286,46 +362,6 @@ public:
       }
     }
   }
-
-  int number_of_patches() const { return m_patches; }
-
-  /// `rhs` (m×3) = Σ_C K_C R_Cᵀ for the rotations of the patches at the
-  /// shape H `coefficients`.
-  void evaluate(const Eigen::MatrixXd& coefficients, Eigen::MatrixXd& rhs) const
-  {
-    rhs.setZero(m_K.rows(), 3);
-    int threads = 1;
-#ifdef _OPENMP
-    // The two products read 6 m × patches numbers: worth a team from a few
-    // hundred patches on.
-    if(static_cast<double>(m_patches) * static_cast<double>(m_K.rows()) > 2e4)
-      threads = (std::min)(omp_get_max_threads(), (m_patches + 63) / 64);
-#endif
-    m_partial.resize(static_cast<std::size_t>(threads));
-#ifdef _OPENMP
-#pragma omp parallel num_threads(threads) if(threads > 1)
-#endif
-    {
-      int thread = 0;
-#ifdef _OPENMP
-      thread = omp_get_thread_num();
-#endif
-      const int first = static_cast<int>(static_cast<long>(m_patches) * thread / threads);
-      const int last = static_cast<int>(static_cast<long>(m_patches) * (thread + 1) / threads);
-      evaluate_patches(coefficients, first, last, m_partial[static_cast<std::size_t>(thread)]);
-    }
-    for(const Eigen::MatrixXd& part : m_partial)
-      rhs += part;
-  }
-
-private:
-  // What the rows of one patch put on one vertex.
-  struct Contribution
-  {
-    int vertex;
-    int patch;
-    Eigen::RowVector3d load, edge;
-  };
 
   // The rotations of the patches [first, last) and their share of the
   // right-hand side.
