@@ -15,6 +15,7 @@
 #include <Eigen/SVD>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace test_meshes;
@@ -155,6 +156,41 @@ TEST_CASE("nearest rotation: the Kabsch solution, reflections and rank two inclu
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   const Eigen::Matrix3d spd = Eigen::Vector3d(3.0, 1.0, 0.0).asDiagonal();
   CHECK((internal::Deformation::nearest_rotation(turn * spd) - turn).norm() < 1e-12);
+}
+
+TEST_CASE("nearest rotation: nearly flat, extreme scales and undetermined inputs", "[detail_transfer]")
+{
+  std::mt19937 random(11);
+  std::normal_distribution<double> normal;
+  const auto random_rotation = [&]() {
+    return Eigen::AngleAxisd(3.0 * std::abs(normal(random)),
+                             Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized())
+        .toRotationMatrix();
+  };
+  // C = U diag(σ) Vᵀ with a known answer U Vᵀ: flat one-rings (σ₃ ≪ σ₂),
+  // reflections (σ₃ < 0) and the scales at which CᵀC would over- or underflow.
+  for(double flatness : {1.0, 1e-2, 1e-4, 1e-8, 0.0})
+    for(double sign : {1.0, -1.0})
+      for(double scale : {1.0, 1e-200, 1e200})
+        for(int trial = 0; trial < 20; ++trial)
+        {
+          const Eigen::Matrix3d U = random_rotation(), V = random_rotation();
+          const Eigen::Vector3d sigma(1.0 + std::abs(normal(random)), 0.2 + 0.5 * std::abs(normal(random)),
+                                      sign * flatness * 0.1);
+          const Eigen::Matrix3d C = scale * U * sigma.asDiagonal() * V.transpose();
+          const Eigen::Matrix3d R = internal::Deformation::nearest_rotation(C);
+          INFO("flatness " << flatness << ", sign " << sign << ", scale " << scale);
+          CHECK((R - U * V.transpose()).cwiseAbs().maxCoeff() < 1e-12);
+          CHECK((R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-14);
+        }
+  // No rotation is determined: rank one, zero, not finite.
+  const Eigen::Matrix3d fallback = random_rotation();
+  const Eigen::Vector3d a(1, 2, 3), b(-1, 0.5, 2);
+  Eigen::Matrix3d not_finite = Eigen::Matrix3d::Identity();
+  not_finite(1, 2) = std::numeric_limits<double>::quiet_NaN();
+  for(const Eigen::Matrix3d& C : {Eigen::Matrix3d(a * b.transpose()), Eigen::Matrix3d(Eigen::Matrix3d::Zero()),
+                                  not_finite, Eigen::Matrix3d(1e300 * a * b.transpose())})
+    CHECK(internal::Deformation::nearest_rotation(C, fallback) == fallback);
 }
 
 TEST_CASE("smooth rotation field: a one-ring squeezed into a line inherits the rotation around it",

@@ -347,13 +347,15 @@ private:
         for(const Contribution& c : part)
           by_vertex[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.vertex)]++)] = &c;
     }
-    Eigen::VectorXd h(basis.cols());
+    const Eigen::Index m = basis.cols();
+    Eigen::VectorXd h(m);
     for(Eigen::Index v = 0; v < n; ++v)
     {
       const int begin = first[static_cast<std::size_t>(v)], end = first[static_cast<std::size_t>(v) + 1];
       if(begin == end)
         continue;
-      h = basis.row(v).transpose();
+      for(Eigen::Index k = 0; k < m; ++k)
+        h[k] = basis(v, k);
       for(int k = begin; k < end; ++k)
       {
         const Contribution& c = *by_vertex[static_cast<std::size_t>(k)];
