@@ -10,6 +10,7 @@
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 
+#include <filesystem>
 #include <iostream>
 #include <random>
 
@@ -207,7 +208,9 @@ int main(int argc, char** argv)
         << "| total | " << fixed(seconds_since(start), 0) << " s |\n";
     if(!first_failure.empty())
       out << "\nFirst failure: " << first_failure << "\n";
-    out << "\nResident memory over time: `" << o.memory_table << "` (plotted by `benchmark/plot_soak_memory.py`).\n";
+    // The report names the table by its file name: both sit in results/.
+    out << "\nResident memory over time: `" << std::filesystem::path(o.memory_table).filename().string()
+        << "` (plotted by `benchmark/plot_soak_memory.py`).\n";
     std::cerr << "report written to " << o.output << "\n";
     return (failures == 0 && non_finite == 0) ? 0 : 1;
   }
