@@ -13,11 +13,10 @@
 #include <CGAL/Spectral_deformation/Deformation_reports.h>
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_deformation/Spectral_parameters.h>
 #include <CGAL/Spectral_deformation/version.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Pipeline_selector.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Region_deformation.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Deformation_class_types.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Template_arguments.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Vertex_selection.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/Default.h>
@@ -26,10 +25,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 
-#include <cmath>
-#include <cstddef>
 #include <istream>
-#include <ostream>
 #include <type_traits>
 #include <vector>
 
@@ -59,27 +55,16 @@ namespace CGAL {
 /// adjacent to the ROI (the *fixed* vertices) hold it in place. Control
 /// vertices are also ROI vertices.
 ///
-/// **Per region.** The work is done on the faces incident to the ROI
-/// vertices (the *region*: the ROI and the fixed vertices), so that its cost
-/// follows the size of the ROI; `n` below is the number of vertices of the
-/// region. Per region, `preprocess()` computes the manifold harmonics basis
-/// of the region (the dominant cost, see `Manifold_harmonics_basis`), its
-/// smooth rest shape, the reduced dual Laplacian matrix and the detail
-/// transfer system; they are kept as long as the ROI, the initial geometry
-/// and the number of frequencies do not change, and are reused by `reset()`,
-/// by constraint changes and by target changes. The basis can also be handed
-/// in (`set_basis()`) or read from a cache (`load_basis()`).
+/// **Costs.** The work is done on the faces incident to the ROI vertices
+/// (the *region*: the ROI and the fixed vertices), so that it follows the
+/// size of the ROI. `preprocess()` computes, per region, the manifold
+/// harmonics basis (the dominant cost, see `Manifold_harmonics_basis`; it
+/// can also be handed in or read from a cache) and, per constraint set, the
+/// `m × m` factorization; `deform()` costs `O(n m)` per iteration and one
+/// back-substitution (see the manual's section "What is computed when").
 ///
-/// **Per constraint set** (`preprocess()` after the control vertices, the
-/// constraint weight or the policy changed): the `m × m` reduced matrix is
-/// updated and factored, plus, for the exact policy, a sparse factorization
-/// of the detail transfer system.
-///
-/// **Per target change** (`deform()`): a rigid motion is fitted to every group
-/// of constrained vertices (the fixed vertices; each connected set of control
-/// vertices) and carries the smooth rest shape to its targets; the reduced
-/// system is iterated with `O(n m)` work per iteration; the details are
-/// transferred back with one back-substitution.
+/// **Parameters** that only the spectral algorithms have, and the basis
+/// cache, are the functions of the base `Spectral_deformation::Spectral_parameters`.
 ///
 /// **Defaults**: 100 frequencies, constraint weight 1, at most 10 iterations,
 /// tolerance 1e-4 on the relative step, `EXACT_CONSTRAINTS` (the semantics of
@@ -132,29 +117,18 @@ template <class TM,
           class Reserved = Default,
           class VPM = Default>
 class Spectral_surface_mesh_deformation
+  : public Spectral_deformation::Spectral_parameters<
+        TM,
+        typename Spectral_deformation::internal::Deformation::Deformation_class_types<TM, VIM, HIM, TAG, ET, ST,
+                                                                                     VPM>::Eigensolver_traits,
+        typename Spectral_deformation::internal::Deformation::Deformation_class_types<TM, VIM, HIM, TAG, ET, ST,
+                                                                                     VPM>::Computation>
 {
-  typedef Spectral_deformation::internal::Deformation::Algorithm_of<TAG> Algorithm_argument;
-  typedef Spectral_deformation::internal::Deformation::Eigensolver_argument<ET, TM, Block_lanczos_eigensolver_traits<>>
-      Eigensolver_argument;
-  typedef Spectral_deformation::internal::Deformation::Sparse_solver_argument<ST> Sparse_solver_argument;
-
-  static_assert(Algorithm_argument::valid,
-                "Spectral_surface_mesh_deformation: the 4th template argument (TAG) must be a "
-                "Spectral_deformation_algorithm_tag (CGAL::SPECTRAL_DUAL_LAPLACIAN, the default; "
-                "CGAL::SPECTRAL_LINEAR; CGAL::SPATIAL_DUAL_LAPLACIAN) or one of CGAL's "
-                "Deformation_algorithm_tag values (CGAL::ORIGINAL_ARAP, CGAL::SPOKES_AND_RIMS, "
-                "CGAL::SRE_ARAP), which select CGAL::SPECTRAL_DUAL_LAPLACIAN");
-  static_assert(Eigensolver_argument::valid,
-                "Spectral_surface_mesh_deformation: the 5th template argument (ET) must be "
-                "CGAL::Default, a model of ManifoldHarmonicsEigensolverTraits (such as "
-                "CGAL::Block_lanczos_eigensolver_traits<> or CGAL::Spectra_eigensolver_traits<>), "
-                "or a weight calculator of CGAL::Surface_mesh_deformation, which is not used; "
-                "write CGAL::Default");
-  static_assert(Sparse_solver_argument::valid,
-                "Spectral_surface_mesh_deformation: the 6th template argument (ST) must be "
-                "CGAL::Default, a model of SparseSPDSolverTraits (such as "
-                "CGAL::Eigen_sparse_spd_solver_traits), or a sparse solver traits of "
-                "CGAL::Surface_mesh_deformation, which is not used; write CGAL::Default");
+  typedef Spectral_deformation::internal::Deformation::Deformation_class_types<TM, VIM, HIM, TAG, ET, ST, VPM> Types;
+  typedef typename Types::Computation Computation;
+  typedef Spectral_deformation::Spectral_parameters<TM, typename Types::Eigensolver_traits, Computation> Base;
+  using Base::m_computation;
+  static constexpr bool is_spectral = Computation::is_spectral;
 
 public:
   /// \name Types
@@ -163,25 +137,18 @@ public:
   /// The mesh type.
   typedef TM Triangle_mesh;
   /// The vertex index map type.
-  typedef typename Default::Get<VIM, typename GetInitializedVertexIndexMap<TM>::type>::type
-      Vertex_index_map;
+  typedef typename Types::Vertex_index_map Vertex_index_map;
   /// The halfedge index map type (unused).
-  typedef typename Default::Get<HIM, typename GetInitializedHalfedgeIndexMap<TM>::type>::type
-      Hedge_index_map;
+  typedef typename Types::Hedge_index_map Hedge_index_map;
   /// The vertex point map type.
-  typedef typename Default::Get<VPM, typename boost::property_map<TM, vertex_point_t>::type>::type
-      Vertex_point_map;
+  typedef typename Types::Vertex_point_map Vertex_point_map;
   /// The eigensolver traits type: `ET`, or `Block_lanczos_eigensolver_traits<>`
   /// when `ET` is `Default` or a weight calculator.
-  typedef typename Eigensolver_argument::type Eigensolver_traits;
+  typedef typename Types::Eigensolver_traits Eigensolver_traits;
   /// The sparse solver traits type of the detail transfer.
-  typedef typename Default::Get<typename Sparse_solver_argument::type,
-                                Default_deformation_sparse_spd_solver_traits>::type Sparse_solver_traits;
+  typedef typename Types::Sparse_solver_traits Sparse_solver_traits;
   /// The sparse solver traits type of the spatial solver.
-  // The spatial solver's system couples two rings of neighbours, dense
-  // enough for a supernodal factor to pay (see benchmark/NOTES.md).
-  typedef typename Default::Get<typename Sparse_solver_argument::type, Default_sparse_spd_solver_traits>::type
-      Spatial_solver_traits;
+  typedef typename Types::Spatial_solver_traits Spatial_solver_traits;
   /// The point type.
   typedef typename boost::property_traits<Vertex_point_map>::value_type Point;
   /// The vertex descriptor type.
@@ -192,26 +159,17 @@ public:
   /// @}
 
 private:
-  typedef Spectral_deformation_error Error;
-  typedef Spectral_deformation::internal::Deformation::Pipeline_selector<Algorithm_argument::value,
-                                                                         Sparse_solver_traits, Spatial_solver_traits>
-      Selector;
-  static constexpr bool is_spectral = Selector::is_spectral;
-  typedef Spectral_deformation::internal::Deformation::Vertex_selection<TM, Vertex_index_map, Vertex_point_map>
-      Selection;
-  typedef Spectral_deformation::internal::Deformation::Region_deformation<Selection, typename Selector::type,
-                                                                          Eigensolver_traits, is_spectral>
-      Computation;
+  typedef typename Types::Selection Selection;
 
 public:
   /// The algorithm that `TAG` selects: `TAG` itself when it is a
   /// `Spectral_deformation_algorithm_tag`, `SPECTRAL_DUAL_LAPLACIAN` when it
   /// is one of CGAL's tags.
-  static constexpr Spectral_deformation_algorithm_tag algorithm = Algorithm_argument::value;
+  static constexpr Spectral_deformation_algorithm_tag algorithm = Types::Algorithm::value;
   /// Whether `TAG` is one of CGAL's `Deformation_algorithm_tag` values.
-  static constexpr bool is_cgal_algorithm_tag = Algorithm_argument::is_cgal_tag;
+  static constexpr bool is_cgal_algorithm_tag = Types::Algorithm::is_cgal_tag;
   /// Whether `ET` is a weight calculator of CGAL's class, accepted and not used.
-  static constexpr bool has_unused_weight_calculator = Eigensolver_argument::is_weight_calculator;
+  static constexpr bool has_unused_weight_calculator = Types::Eigensolver::is_weight_calculator;
 
   /// Whether the algorithm `TAG` works in a basis of manifold harmonics
   /// (`SPECTRAL_DUAL_LAPLACIAN`, `SPECTRAL_LINEAR`). The options of the basis
@@ -534,90 +492,6 @@ public:
   /// smooth mesh already makes neighbouring rotations alike.
   void set_sre_arap_alpha(double alpha) { CGAL_USE(alpha); }
 
-  /// The number of frequencies `m` of the basis (default 100).
-  std::size_t number_of_frequencies() const { return m_computation.settings().frequencies; }
-  /// Sets the number of frequencies; a region with fewer vertices uses all of
-  /// them. A different value makes the next `preprocess()` rebuild the
-  /// region, basis included. Does not compile with `SPATIAL_DUAL_LAPLACIAN`.
-  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `m` is 0.
-  void set_number_of_frequencies(std::size_t m)
-  {
-    static_assert(is_spectral, "set_number_of_frequencies(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    if(m == 0)
-      throw Error(Error::INVALID_ARGUMENT, "the number of frequencies must be positive");
-    if(m != m_computation.settings().frequencies)
-    {
-      m_computation.settings().frequencies = m;
-      m_computation.drop_region();
-    }
-  }
-  /// The weight `w` of the constraints in the reduced least squares system (default 1).
-  double constraint_weight() const { return m_computation.settings().weight; }
-  /// Sets the constraint weight, a change of the constraint set. Larger
-  /// weights meet the constraints of the smooth mesh more closely but the
-  /// truncated basis cannot form sharp transitions, which degrades the
-  /// result; smaller weights loosen the constraints. Does not compile with
-  /// `SPATIAL_DUAL_LAPLACIAN`.
-  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) unless `w` is positive and finite.
-  void set_constraint_weight(double w)
-  {
-    static_assert(is_spectral, "set_constraint_weight(): SPATIAL_DUAL_LAPLACIAN has no constraint weight");
-    if(!(w > 0 && std::isfinite(w)))
-      throw Error(Error::INVALID_ARGUMENT, "the constraint weight must be positive and finite");
-    m_computation.settings().weight = w;
-    m_computation.constraints_changed();
-  }
-  /// The constraint policy (default `EXACT_CONSTRAINTS`).
-  Spectral_constraint_policy constraint_policy() const { return m_computation.settings().policy; }
-  /// Sets the constraint policy; a different policy is a change of the
-  /// constraint set. Does not compile with `SPATIAL_DUAL_LAPLACIAN`.
-  void set_constraint_policy(Spectral_constraint_policy policy)
-  {
-    static_assert(is_spectral, "set_constraint_policy(): SPATIAL_DUAL_LAPLACIAN always meets the constraints exactly");
-    if(policy != m_computation.settings().policy)
-    {
-      m_computation.settings().policy = policy;
-      m_computation.constraints_changed();
-    }
-  }
-  /// Sets the eigensolver used when a basis is next computed; a basis already
-  /// computed is kept.
-  void set_eigensolver_traits(const Eigensolver_traits& traits)
-  {
-    static_assert(is_spectral, "set_eigensolver_traits(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.eigensolver() = traits;
-  }
-  /// Whether `deform()` reads its copy of the basis in single precision
-  /// (default `false`).
-  bool single_precision_basis() const { return m_computation.settings().single_precision_basis; }
-  /// Stores the copy of the basis that every iteration of `deform()` reads
-  /// in float (4 n m bytes instead of 8 n m); the arithmetic stays in double.
-  /// Not the default: the reduced systems amplify the rounding of the copy,
-  /// and results move by about \f$ 10^{-4} \f$ of the bounding-box diagonal
-  /// (see the manual's Performance section). Takes effect at once, the
-  /// basis is kept. Does not compile with `SPATIAL_DUAL_LAPLACIAN`.
-  void set_single_precision_basis(bool single)
-  {
-    static_assert(is_spectral, "set_single_precision_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.set_single_precision(single);
-  }
-
-  /// The number of rotation patches of the iteration (default 0: one
-  /// rotation per dual vertex, the full iteration of the paper).
-  std::size_t rotation_patches() const { return m_computation.settings().rotation_patches; }
-  /// Groups the dual vertices of the region into about `count` patches of
-  /// neighbouring faces that turn by one rotation each in the iterations of
-  /// `deform()`. Each iteration then costs O(m × count) instead of two
-  /// products with the n×m basis, whatever the size of the mesh; only the
-  /// detail transfer and the output stay O(n). 0 restores the full
-  /// iteration. Takes effect at once, the basis and the factorization are
-  /// kept. Does not compile with `SPATIAL_DUAL_LAPLACIAN`.
-  void set_rotation_patches(std::size_t count)
-  {
-    static_assert(is_spectral, "set_rotation_patches(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.set_rotation_patches(count);
-  }
-
   /// Whether the solvers of this object may change state of the whole
   /// process to run faster (default `false`): the thread count of OpenBLAS,
   /// huge pages, SuiteSparse's allocator during a factorization (see
@@ -635,30 +509,6 @@ public:
 
   /// \name Basis cache
   /// @{
-
-  /// Hands in a precomputed basis. It is used instead of computing one when
-  /// the region is the mesh on which `basis` was computed: every face has a
-  /// vertex in the ROI (for instance, the ROI is the whole mesh), the
-  /// vertices are indexed alike and the initial geometry is the one `basis`
-  /// was computed with. Its number of frequencies then prevails. Otherwise
-  /// it is ignored and `preprocess_report().basis_computed` tells. Does not
-  /// compile with `SPATIAL_DUAL_LAPLACIAN`.
-  template <class EigensolverTraits>
-  void set_basis(const Manifold_harmonics_basis<TM, EigensolverTraits>& basis)
-  {
-    static_assert(is_spectral, "set_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.supply_basis(basis.data(), true);
-  }
-
-  /// Writes the basis of the current region in the format of
-  /// `Manifold_harmonics_basis::save()`.
-  /// \throws Spectral_deformation_error (`IO_ERROR`) when there is no basis
-  ///         yet (call `preprocess()` first) or the stream fails.
-  void save_basis(std::ostream& os) const
-  {
-    static_assert(is_spectral, "save_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.save_basis(os);
-  }
 
   /// Reads a basis written by `save_basis()` (or by
   /// `Manifold_harmonics_basis::save()`) and uses it for the current region
@@ -736,7 +586,6 @@ private:
 
   Selection m_selection;
   Hedge_index_map m_him;
-  Computation m_computation;
   unsigned int m_iterations = 10;
   double m_tolerance = 1e-4;
 };

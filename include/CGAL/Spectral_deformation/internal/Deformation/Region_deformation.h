@@ -42,9 +42,14 @@ using Mesh::Positions;
 /// change), the settings, a basis handed in, and the reports. `preprocess()`
 /// and `deform()` never throw `Spectral_deformation_error`: they put the
 /// reason in their report.
-template <class VertexSelection, class Pipeline, class EigensolverTraits, bool is_spectral>
+template <class VertexSelection, class Pipeline, class EigensolverTraits, bool IsSpectral>
 class Region_deformation
 {
+public:
+  /// Whether `Pipeline` works in a basis of manifold harmonics.
+  static constexpr bool is_spectral = IsSpectral;
+
+private:
   typedef typename VertexSelection::vertex_descriptor vertex_descriptor;
   typedef typename VertexSelection::Point Point;
   typedef Spectral_deformation_error Error;
@@ -126,13 +131,13 @@ public:
       m_region->pipeline.set_rotation_patches(count);
   }
 
-  /// A basis to use for a region on the mesh it was computed on.
-  void supply_basis(Basis_data data, bool check_current_region)
+  /// A basis to use for a region on the mesh it was computed on; a region
+  /// built with another basis is built again.
+  void supply_basis(Basis_data data)
   {
     m_supplied_basis = std::move(data);
-    if(!check_current_region ||
-       (m_region && !m_region->pipeline.basis().empty() &&
-        m_supplied_basis.fingerprint != m_region->pipeline.basis().fingerprint))
+    if(m_region && !m_region->pipeline.basis().empty() &&
+       m_supplied_basis.fingerprint != m_region->pipeline.basis().fingerprint)
       drop_region();
   }
 
@@ -148,7 +153,8 @@ public:
   {
     Basis_data data = Basis::read_basis(is);
     Basis::check_basis_matches(data, extract_region(selection).arrays);
-    supply_basis(std::move(data), false);
+    m_supplied_basis = std::move(data);
+    drop_region();
   }
 
   /// The local index of `vd` in the region, or -1.

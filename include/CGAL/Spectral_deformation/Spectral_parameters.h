@@ -1,0 +1,173 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_SPECTRAL_PARAMETERS_H
+#define CGAL_SPECTRAL_DEFORMATION_SPECTRAL_PARAMETERS_H
+
+#include <CGAL/Manifold_harmonics_basis.h>
+#include <CGAL/Spectral_deformation/Deformation_options.h>
+#include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
+
+#include <cmath>
+#include <cstddef>
+#include <ostream>
+
+namespace CGAL {
+namespace Spectral_deformation {
+
+/// \ingroup PkgSpectralSurfaceMeshDeformationRef
+/// The parameters that only the spectral algorithms have (the basis, the
+/// reduced system, the iteration in the basis) and the basis cache: a public
+/// base of `Spectral_surface_mesh_deformation`, whose functions they are.
+/// With `SPATIAL_DUAL_LAPLACIAN`, which has no basis, they do not compile;
+/// the getters return the defaults.
+///
+/// \tparam TM the mesh type of the deformation
+/// \tparam EigensolverTraits the eigensolver traits of the deformation
+/// \tparam Computation the computation on the region behind the deformation
+///         class (not documented: an implementation detail)
+template <class TM, class EigensolverTraits, class Computation>
+class Spectral_parameters
+{
+  static constexpr bool is_spectral = Computation::is_spectral;
+  typedef Spectral_deformation_error Error;
+
+public:
+  /// \name Parameters of the spectral algorithms
+  /// @{
+
+  /// The number of frequencies `m` of the basis (default 100).
+  std::size_t number_of_frequencies() const { return m_computation.settings().frequencies; }
+  /// Sets the number of frequencies; a region with fewer vertices uses all of
+  /// them. A different value makes the next `preprocess()` rebuild the
+  /// region, basis included.
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `m` is 0.
+  void set_number_of_frequencies(std::size_t m)
+  {
+    static_assert(is_spectral, "set_number_of_frequencies(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    if(m == 0)
+      throw Error(Error::INVALID_ARGUMENT, "the number of frequencies must be positive");
+    if(m != m_computation.settings().frequencies)
+    {
+      m_computation.settings().frequencies = m;
+      m_computation.drop_region();
+    }
+  }
+
+  /// The weight `w` of the constraints in the reduced least squares system (default 1).
+  double constraint_weight() const { return m_computation.settings().weight; }
+  /// Sets the constraint weight, a change of the constraint set. Larger
+  /// weights meet the constraints of the smooth mesh more closely but the
+  /// truncated basis cannot form sharp transitions, which degrades the
+  /// result; smaller weights loosen the constraints.
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) unless `w` is positive and finite.
+  void set_constraint_weight(double w)
+  {
+    static_assert(is_spectral, "set_constraint_weight(): SPATIAL_DUAL_LAPLACIAN has no constraint weight");
+    if(!(w > 0 && std::isfinite(w)))
+      throw Error(Error::INVALID_ARGUMENT, "the constraint weight must be positive and finite");
+    m_computation.settings().weight = w;
+    m_computation.constraints_changed();
+  }
+
+  /// The constraint policy (default `EXACT_CONSTRAINTS`).
+  Spectral_constraint_policy constraint_policy() const { return m_computation.settings().policy; }
+  /// Sets the constraint policy; a different policy is a change of the
+  /// constraint set.
+  void set_constraint_policy(Spectral_constraint_policy policy)
+  {
+    static_assert(is_spectral, "set_constraint_policy(): SPATIAL_DUAL_LAPLACIAN always meets the constraints exactly");
+    if(policy != m_computation.settings().policy)
+    {
+      m_computation.settings().policy = policy;
+      m_computation.constraints_changed();
+    }
+  }
+
+  /// Sets the eigensolver used when a basis is next computed; a basis already
+  /// computed is kept.
+  void set_eigensolver_traits(const EigensolverTraits& traits)
+  {
+    static_assert(is_spectral, "set_eigensolver_traits(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    m_computation.eigensolver() = traits;
+  }
+
+  /// Whether `deform()` reads its copy of the basis in single precision
+  /// (default `false`).
+  bool single_precision_basis() const { return m_computation.settings().single_precision_basis; }
+  /// Stores the copy of the basis that every iteration of `deform()` reads
+  /// in float (4 n m bytes instead of 8 n m); the arithmetic stays in double.
+  /// Not the default: the reduced systems amplify the rounding of the copy,
+  /// and results move by about \f$ 10^{-4} \f$ of the bounding-box diagonal
+  /// (see the manual's Performance section). Takes effect at once, the
+  /// basis is kept.
+  void set_single_precision_basis(bool single)
+  {
+    static_assert(is_spectral, "set_single_precision_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    m_computation.set_single_precision(single);
+  }
+
+  /// The number of rotation patches of the iteration (default 0: one
+  /// rotation per dual vertex, the full iteration of the paper).
+  std::size_t rotation_patches() const { return m_computation.settings().rotation_patches; }
+  /// Groups the dual vertices of the region into about `count` patches of
+  /// neighbouring faces that turn by one rotation each in the iterations of
+  /// `deform()`. Each iteration then costs O(m × count) instead of two
+  /// products with the n×m basis, whatever the size of the mesh; only the
+  /// detail transfer and the output stay O(n). 0 restores the full
+  /// iteration. Takes effect at once, the basis and the factorization are
+  /// kept.
+  void set_rotation_patches(std::size_t count)
+  {
+    static_assert(is_spectral, "set_rotation_patches(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    m_computation.set_rotation_patches(count);
+  }
+
+  /// @}
+
+  /// \name Basis cache
+  /// @{
+
+  /// Hands in a precomputed basis. It is used instead of computing one when
+  /// the region is the mesh on which `basis` was computed: every face has a
+  /// vertex in the ROI (for instance, the ROI is the whole mesh), the
+  /// vertices are indexed alike and the initial geometry is the one `basis`
+  /// was computed with. Its number of frequencies then prevails. Otherwise
+  /// it is ignored and `preprocess_report().basis_computed` tells.
+  /// \tparam BasisEigensolverTraits the eigensolver traits `basis` was computed with
+  template <class BasisEigensolverTraits>
+  void set_basis(const Manifold_harmonics_basis<TM, BasisEigensolverTraits>& basis)
+  {
+    static_assert(is_spectral, "set_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    m_computation.supply_basis(basis.data());
+  }
+
+  /// Writes the basis of the current region in the format of
+  /// `Manifold_harmonics_basis::save()`.
+  /// \throws Spectral_deformation_error (`IO_ERROR`) when there is no basis
+  ///         yet (call `preprocess()` first) or the stream fails.
+  void save_basis(std::ostream& os) const
+  {
+    static_assert(is_spectral, "save_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    m_computation.save_basis(os);
+  }
+
+  /// @}
+
+protected:
+  Spectral_parameters() = default;
+  ~Spectral_parameters() = default;
+  Spectral_parameters(const Spectral_parameters&) = delete;
+  Spectral_parameters& operator=(const Spectral_parameters&) = delete;
+
+  /// The computation on the region, which the deformation class drives.
+  Computation m_computation;
+};
+
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_SPECTRAL_PARAMETERS_H
