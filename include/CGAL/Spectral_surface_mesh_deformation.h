@@ -61,7 +61,8 @@ namespace CGAL {
 /// harmonics basis (the dominant cost, see `Manifold_harmonics_basis`; it
 /// can also be handed in or read from a cache) and, per constraint set, the
 /// `m × m` factorization; `deform()` costs `O(n m)` per iteration and one
-/// back-substitution (see the manual's section "What is computed when").
+/// back-substitution, for `n` vertices of the region and `m` frequencies (see
+/// the manual's section "What is computed when").
 ///
 /// **Parameters** that only the spectral algorithms have, and the basis
 /// cache, are the functions of the base `Spectral_deformation::Spectral_parameters`.
