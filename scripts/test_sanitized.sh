@@ -4,8 +4,8 @@
 # The Catch2 suite built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (SSMD_SANITIZE=ON), tests only, in build-asan/ (or $SSMD_ASAN_BUILD_DIR).
 # -O1 -g1 (line tables) keeps the reports readable and builds faster than
-# -O2 -g (see benchmark/NOTES.md), this build being most of the CI's time; any sanitizer
-# report fails the test that triggered it.
+# -O2 -g (see benchmark/NOTES.md), this build being most of the CI's time;
+# any sanitizer report fails the test that triggered it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${SSMD_ASAN_BUILD_DIR:-$root/build-asan}"

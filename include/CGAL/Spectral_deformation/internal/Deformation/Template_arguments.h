@@ -134,8 +134,8 @@ struct Eigensolver_argument
       std::conjunction<std::bool_constant<!is_default && !is_eigensolver_traits>,
                        Is_weight_calculator<ET, TM>>::value;
   static constexpr bool valid = is_default || is_eigensolver_traits || is_weight_calculator;
-  // Anything else falls back on the default: the static_assert of Deformation_class_types is
-  // then the only error.
+  // Anything else falls back on the default: the static_assert of
+  // Deformation_class_types is then the only error.
   typedef std::conditional_t<is_eigensolver_traits, ET, DefaultTraits> type;
 };
 
