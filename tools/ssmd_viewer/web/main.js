@@ -182,34 +182,222 @@ function updateColors() {
   color.needsUpdate = true;
 }
 
+// --- selection undo ------------------------------------------------------------
+// Each change of the selection (a box, a brush stroke, a clear) keeps the
+// flags it replaced. Drag and selection steps carry a common clock so that
+// Ctrl+Z undoes whichever came last; the buttons undo one kind each.
+const MAX_SELECTION_UNDO = 50;          // snapshots are 3n bytes each
+const selectionUndo = [];
+let historyClock = 0;
+
+function snapshotSelection() {
+  return { roi: selection.roi.slice(), fixed: selection.fixed.slice(), handle: selection.handle.slice() };
+}
+
+function sameFlags(a, b) {
+  for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) return false;
+  return true;
+}
+
+// Records `before` as an undo step unless the flags are still the same: an
+// empty box or a stroke over the background is no step.
+function commitSelectionChange(before) {
+  if (['roi', 'fixed', 'handle'].every((mode) => sameFlags(before[mode], selection[mode]))) return false;
+  selectionUndo.push({ flags: before, time: ++historyClock });
+  if (selectionUndo.length > MAX_SELECTION_UNDO) selectionUndo.shift();
+  $('undo-selection').disabled = false;
+  return true;
+}
+
+function undoSelection() {
+  const step = selectionUndo.pop();
+  $('undo-selection').disabled = selectionUndo.length === 0;
+  if (!step) return false;
+  for (const mode in selection) selection[mode].set(step.flags[mode]);
+  updateColors();
+  return true;
+}
+
+// --- what the camera sees -------------------------------------------------------
+// The selection tools can take only the vertices the camera sees. The mesh's
+// depth is rendered off screen once per box or brush stroke (the camera does
+// not move meanwhile) and read back, so that visibility is one lookup per
+// vertex and the surface under the pointer one per move, instead of rays
+// through all the triangles.
+const VISIBILITY_TOLERANCE = 0.01;      // relative to the bounding radius: how far behind the surface seen a vertex still counts as seen
+const depthMaterial = new THREE.MeshDepthMaterial({ depthPacking: THREE.RGBADepthPacking });
+const depthScene = new THREE.Scene();
+depthScene.overrideMaterial = depthMaterial;
+const depthTarget = new THREE.WebGLRenderTarget(1, 1); // no multisampling: depths are not blended
+let depthPixels = new Uint8Array(4);
+
+// Renders the mesh alone (not the gizmo) with its window depth packed into
+// RGBA, 1 (white) where there is no surface, and reads it back.
+function renderDepth() {
+  const size = renderer.getDrawingBufferSize(new THREE.Vector2());
+  if (depthTarget.width !== size.x || depthTarget.height !== size.y) depthTarget.setSize(size.x, size.y);
+  if (depthPixels.length !== 4 * size.x * size.y) depthPixels = new Uint8Array(4 * size.x * size.y);
+  camera.updateMatrixWorld(); // the camera may have moved since the last frame
+  const clearColor = renderer.getClearColor(new THREE.Color()), clearAlpha = renderer.getClearAlpha();
+  depthScene.add(mesh); // borrowed from the scene, which takes it back below
+  renderer.setClearColor(0xffffff, 1);
+  renderer.setRenderTarget(depthTarget);
+  renderer.render(depthScene, camera);
+  renderer.setRenderTarget(null);
+  renderer.setClearColor(clearColor, clearAlpha);
+  scene.add(mesh);
+  renderer.readRenderTargetPixels(depthTarget, 0, 0, size.x, size.y, depthPixels);
+  return { width: size.x, height: size.y, pixels: depthPixels };
+}
+
+// The window depth in [0, 1] at a pixel (x to the right, y up), as
+// three.js's packDepthToRGBA stores it.
+function depthAt(depth, x, y) {
+  const p = depth.pixels, i = 4 * (y * depth.width + x);
+  return p[i] / 256 + p[i + 1] / 65536 + p[i + 2] / 16777216 + p[i + 3] / (255 * 16777216);
+}
+
+// The distance along the view direction of a window depth: comparisons are
+// made there because window depth is far from linear.
+function viewDepth(d) { return camera.near * camera.far / (camera.far - d * (camera.far - camera.near)); }
+
+// Flags the vertices in the view that lie at most the tolerance behind the
+// surface seen at their pixel. The tolerance lets through the vertices on
+// surfaces up to about 80 degrees from facing the camera (the pixel's center
+// is half a pixel off the vertex); it also hides no vertex behind a farther
+// neighbor pixel, as a margin of pixels around silhouettes would.
+function visibleVertices(depth) {
+  const visible = new Uint8Array(n);
+  const p = new THREE.Vector3(), position = geometry.attributes.position;
+  const tolerance = VISIBILITY_TOLERANCE * geometry.boundingSphere.radius;
+  const { width, height } = depth;
+  for (let i = 0; i < n; ++i) {
+    p.fromBufferAttribute(position, i).applyMatrix4(camera.matrixWorldInverse);
+    const distance = -p.z;
+    p.applyMatrix4(camera.projectionMatrix);
+    if (Math.abs(p.x) > 1 || Math.abs(p.y) > 1 || Math.abs(p.z) > 1) continue;
+    const x = Math.min(width - 1, Math.floor((p.x + 1) / 2 * width));
+    const y = Math.min(height - 1, Math.floor((p.y + 1) / 2 * height));
+    if (distance <= viewDepth(depthAt(depth, x, y)) + tolerance) visible[i] = 1;
+  }
+  return visible;
+}
+
+// The point of the surface seen at a client pixel, or null over the background.
+function surfacePoint(depth, clientX, clientY) {
+  const r = renderer.domElement.getBoundingClientRect();
+  const x = Math.floor((clientX - r.left) / r.width * depth.width);
+  const y = Math.floor((r.bottom - clientY) / r.height * depth.height);
+  if (x < 0 || y < 0 || x >= depth.width || y >= depth.height) return null;
+  const d = depthAt(depth, x, y);
+  if (d >= 1) return null;
+  return new THREE.Vector3((x + 0.5) / depth.width * 2 - 1, (y + 0.5) / depth.height * 2 - 1, 2 * d - 1).unproject(camera);
+}
+
+// --- box -------------------------------------------------------------------------
 // Flags the vertices whose projection lies in the box (normalized device
-// coordinates), hidden ones included: a box through the mesh takes both sides.
-function selectBox(mode, x0, y0, x1, y1, remove = false) {
+// coordinates): only those the camera sees with visibleOnly, else hidden ones
+// too, so that a box through the mesh takes both sides.
+function selectBox(mode, x0, y0, x1, y1, { remove = false, visibleOnly = false } = {}) {
   const [xmin, xmax, ymin, ymax] = [Math.min(x0, x1), Math.max(x0, x1), Math.min(y0, y1), Math.max(y0, y1)];
+  const visible = visibleOnly ? visibleVertices(renderDepth()) : null;
+  const before = snapshotSelection();
   const p = new THREE.Vector3();
   const position = geometry.attributes.position;
   camera.updateMatrixWorld(); // the camera may have moved since the last frame
   let count = 0;
   for (let i = 0; i < n; ++i) {
+    if (visible && !visible[i]) continue;
     p.fromBufferAttribute(position, i).project(camera);
     if (p.z < 1 && p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax) {
       selection[mode][i] = remove ? 0 : 1;
       ++count;
     }
   }
+  commitSelectionChange(before);
   updateColors();
   return count;
 }
 
+// --- brush -----------------------------------------------------------------------
+// A stroke paints, at each pointer position, the vertices within the radius of
+// the surface point under the pointer. The depth is rendered when the stroke
+// starts, and the vertices that may be painted are listed then.
+const BRUSH_STEP_PIXELS = 4;            // a fast pointer move is painted at least every 4 pixels
+let stroke = null;
+
+function brushFraction() { return Number($('brush-radius').value); }
+function setBrushFraction(fraction) {
+  const slider = $('brush-radius');
+  slider.value = Math.min(Number(slider.max), Math.max(Number(slider.min), fraction));
+  $('brush-radius-value').textContent = brushFraction().toFixed(3);
+}
+
+function beginStroke(mode, { remove = false, visibleOnly = true, fraction = brushFraction() } = {}) {
+  const depth = renderDepth();
+  const candidates = visibleOnly ? indicesOf(visibleVertices(depth)) : indicesOf(new Uint8Array(n).fill(1));
+  stroke = { depth, candidates, mode, value: remove ? 0 : 1, radius: fraction * geometry.boundingSphere.radius,
+             before: snapshotSelection(), last: null };
+}
+
+// Paints at one client pixel; returns the surface point and how many vertices it reached.
+function paintAt(clientX, clientY) {
+  const hit = surfacePoint(stroke.depth, clientX, clientY);
+  if (!hit) return { hit: null, count: 0 };
+  const flags = selection[stroke.mode], position = geometry.attributes.position, p = new THREE.Vector3();
+  const r2 = stroke.radius * stroke.radius;
+  let count = 0;
+  for (const i of stroke.candidates)
+    if (p.fromBufferAttribute(position, i).distanceToSquared(hit) <= r2) { flags[i] = stroke.value; ++count; }
+  return { hit, count };
+}
+
+// Paints from the previous pointer position to this one.
+function paintTo(clientX, clientY) {
+  const [x0, y0] = stroke.last || [clientX, clientY];
+  const steps = Math.max(1, Math.ceil(Math.hypot(clientX - x0, clientY - y0) / BRUSH_STEP_PIXELS));
+  let result = null;
+  for (let k = 1; k <= steps; ++k) result = paintAt(x0 + (clientX - x0) * k / steps, y0 + (clientY - y0) * k / steps);
+  stroke.last = [clientX, clientY];
+  updateColors();
+  return result;
+}
+
+function endStroke() {
+  commitSelectionChange(stroke.before);
+  stroke = null;
+}
+
+// The brush's outline at the pointer, sized at the distance of the orbit's
+// center: only a guide, the painted sphere is centered on the surface.
+const brushCursor = $('brush-cursor');
+function showBrushCursor(event) {
+  if (currentTool() !== 'brush' || n === 0 || event.target !== renderer.domElement) {
+    brushCursor.style.display = 'none';
+    return;
+  }
+  const distance = camera.position.distanceTo(orbit.target);
+  const pixels = brushFraction() * geometry.boundingSphere.radius / (distance * Math.tan(THREE.MathUtils.degToRad(camera.fov / 2)))
+    * renderer.domElement.clientHeight / 2;
+  Object.assign(brushCursor.style, { display: 'block', left: `${event.clientX}px`, top: `${event.clientY}px`,
+                                     width: `${2 * pixels}px`, height: `${2 * pixels}px` });
+}
+
 function selectIndices(mode, indices) {
+  const before = snapshotSelection();
   for (const i of indices) selection[mode][i] = 1;
+  commitSelectionChange(before);
   updateColors();
 }
 
+// Also forgets the prepared region and its drags: they belong to the old selection.
 function clearSelection() {
+  const before = snapshotSelection();
   for (const mode in selection) selection[mode].fill(0);
   gizmo.detach();
   region = null;
+  undoStack.length = 0;
+  commitSelectionChange(before);
   updateColors();
 }
 
@@ -230,18 +418,26 @@ function prepare() {
   send({ type: 'select', roi: indicesOf(selection.roi), fixed: indicesOf(selection.fixed), handle: indicesOf(selection.handle) });
 }
 
+// Shift-drag runs the chosen tool; Ctrl, or the erase box, removes.
 const box = $('box');
 let boxStart = null;
+function currentTool() { return document.querySelector('input[name=tool]:checked').value; }
+function erasing(event) { return event.ctrlKey || $('erase').checked; }
 function toNdc(event) {
   const r = renderer.domElement.getBoundingClientRect();
   return [((event.clientX - r.left) / r.width) * 2 - 1, -((event.clientY - r.top) / r.height) * 2 + 1];
 }
 renderer.domElement.addEventListener('pointerdown', (event) => {
-  if (!event.shiftKey || n === 0) return;
+  if (!event.shiftKey || n === 0 || event.button !== 0) return;
   orbit.enabled = false;
-  boxStart = event;
+  if (currentTool() === 'brush') {
+    beginStroke(currentMode(), { remove: erasing(event), visibleOnly: $('visible-only').checked });
+    paintTo(event.clientX, event.clientY);
+  } else boxStart = event;
 }, true);
 window.addEventListener('pointermove', (event) => {
+  showBrushCursor(event);
+  if (stroke) paintTo(event.clientX, event.clientY);
   if (!boxStart) return;
   Object.assign(box.style, {
     display: 'block', left: `${Math.min(boxStart.clientX, event.clientX)}px`, top: `${Math.min(boxStart.clientY, event.clientY)}px`,
@@ -249,9 +445,13 @@ window.addEventListener('pointermove', (event) => {
   });
 });
 window.addEventListener('pointerup', (event) => {
+  if (stroke) {
+    endStroke();
+    orbit.enabled = true;
+  }
   if (!boxStart) return;
   const [x0, y0] = toNdc(boxStart), [x1, y1] = toNdc(event);
-  selectBox(currentMode(), x0, y0, x1, y1, event.ctrlKey);
+  selectBox(currentMode(), x0, y0, x1, y1, { remove: erasing(event), visibleOnly: $('visible-only').checked });
   boxStart = null;
   box.style.display = 'none';
   orbit.enabled = true;
@@ -282,7 +482,9 @@ function sendDrag(settle = false) {
   send(command);
 }
 
-function snapshot() { return { translation: handleObject.position.clone().sub(center), quaternion: handleObject.quaternion.clone() }; }
+function snapshot() {
+  return { translation: handleObject.position.clone().sub(center), quaternion: handleObject.quaternion.clone(), time: ++historyClock };
+}
 
 gizmo.addEventListener('dragging-changed', (event) => {
   orbit.enabled = !event.value;
@@ -298,6 +500,14 @@ function undo() {
   sendDrag(true);
 }
 
+// Ctrl+Z: the latest of the gizmo drags (which exist only while a region is
+// prepared) and the selection changes.
+function undoLatest() {
+  const drag = undoStack.at(-1), step = selectionUndo.at(-1);
+  if (step && (!drag || step.time > drag.time)) undoSelection();
+  else undo();
+}
+
 function reset() {
   if (!region) return;
   undoStack.length = 0;
@@ -308,16 +518,28 @@ function reset() {
 $('clear').onclick = clearSelection;
 $('prepare').onclick = prepare;
 $('undo').onclick = undo;
+$('undo-selection').onclick = undoSelection;
 $('reset').onclick = reset;
 $('save').onclick = () => send({ type: 'save' });
 for (const input of document.querySelectorAll('input[name=gizmo]'))
   input.onchange = () => gizmo.setMode(input.value);
+$('brush-radius').oninput = () => setBrushFraction(brushFraction());
+setBrushFraction(brushFraction());
+const BRUSH_KEY_FACTOR = 1.25;          // [ and ] scale the brush by this
 window.addEventListener('keydown', (event) => {
   if (event.key === 't' || event.key === 'r') {
     const mode = event.key === 't' ? 'translate' : 'rotate';
     gizmo.setMode(mode);
     document.querySelector(`input[name=gizmo][value=${mode}]`).checked = true;
-  } else if (event.key === 'z' && event.ctrlKey) undo();
+  } else if (event.key === 'b') {
+    const tool = currentTool() === 'brush' ? 'box' : 'brush';
+    document.querySelector(`input[name=tool][value=${tool}]`).checked = true;
+  } else if (event.key === '[' || event.key === ']') {
+    setBrushFraction(brushFraction() * (event.key === ']' ? BRUSH_KEY_FACTOR : 1 / BRUSH_KEY_FACTOR));
+  } else if ((event.key === 'z' || event.key === 'Z') && event.ctrlKey) {
+    event.preventDefault();
+    undoLatest();
+  }
 });
 
 // --- hook for scripts (the browser test) ---------------------------------------------
@@ -345,9 +567,35 @@ async function animateHandle(seconds, amplitude) {
            lastDeformMs: stats.deformMs, lastServerMs: stats.serverMs, lastRoundTripMs: stats.roundTripMs };
 }
 
+// One brush stroke of a single dab at a client pixel, as a Shift-press there
+// would paint (radiusFraction relative to the bounding radius).
+function brushAt(clientX, clientY, mode, radiusFraction = brushFraction(), { remove = false, visibleOnly = true } = {}) {
+  beginStroke(mode, { remove, visibleOnly, fraction: radiusFraction });
+  const { hit, count } = paintAt(clientX, clientY);
+  updateColors();
+  const radius = stroke.radius;
+  endStroke();
+  return { hit: hit ? hit.toArray() : null, count, radius };
+}
+
+function clientPixel(point) {
+  camera.updateMatrixWorld();
+  const p = point.clone().project(camera), r = renderer.domElement.getBoundingClientRect();
+  return [r.left + (p.x + 1) / 2 * r.width, r.top + (1 - p.y) / 2 * r.height];
+}
+
 window.ssmdViewer = {
   meshLoaded: n > 0 ? Promise.resolve() : next('mesh'),
-  selectBox, selectIndices, clearSelection,
+  // The box in normalized device coordinates; options { remove, visibleOnly }
+  // (a boolean: remove, as before), both false by default: the box as it was
+  // before the visible-side option, whatever the page's check box says.
+  selectBox(mode, x0, y0, x1, y1, options = {}) {
+    return selectBox(mode, x0, y0, x1, y1, typeof options === 'boolean' ? { remove: options } : options);
+  },
+  selectIndices, clearSelection, brushAt, undoSelection,
+  selectionUndoSteps: () => selectionUndo.length,
+  brushRadius: brushFraction,
+  visible: () => indicesOf(visibleVertices(renderDepth())),
   prepare() { const reply = next('ready', 'error'); prepare(); return reply; },
   drag(translation, quaternion = [0, 0, 0, 1]) {
     placeGizmo(new THREE.Vector3(...translation), new THREE.Quaternion(...quaternion));
@@ -362,10 +610,11 @@ window.ssmdViewer = {
   selected: (mode) => indicesOf(selection[mode]),
   region: () => Array.from(region || []),
   radius: () => geometry.boundingSphere.radius,
-  gizmoPixel() {
-    const p = handleObject.position.clone().project(camera), r = renderer.domElement.getBoundingClientRect();
-    return [r.left + (p.x + 1) / 2 * r.width, r.top + (1 - p.y) / 2 * r.height];
-  },
+  gizmoPixel: () => clientPixel(handleObject.position),
+  vertexPixel: (i) => clientPixel(new THREE.Vector3().fromBufferAttribute(geometry.attributes.position, i)),
+  camera: () => { camera.updateMatrixWorld(); return { position: camera.position.toArray(), near: camera.near, far: camera.far }; },
+  faces: () => Array.from(geometry.index.array),
+  normals: () => Array.from(geometry.attributes.normal.array),
   idle: () => !inFlight && !dirty,
   stats: () => ({ ...stats }),
 };
