@@ -137,14 +137,16 @@ public:
     return m_dirichlet_ready;
   }
 
-  /// The Poisson right-hand side for the smooth deformed positions.
-  Eigen::MatrixXd right_hand_side(const Positions& smooth_deformed) const
+  /// The Poisson right-hand side for the smooth deformed positions (valid
+  /// until the next call).
+  const Eigen::MatrixXd& right_hand_side(const Positions& smooth_deformed) const
   {
     m_rotations.compute(smooth_deformed, m_rotation_workspace);
     const std::vector<Eigen::Matrix3d>& R = m_rotation_workspace;
     const Cotangent_adjacency& a = m_rotations.adjacency();
     const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_rest.rows());
-    Eigen::MatrixXd rhs(n, 3);
+    Eigen::MatrixXd& rhs = m_right_hand_side;
+    rhs.resize(n, 3);
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) if(n > 20000)
 #endif
@@ -161,18 +163,20 @@ public:
   /// Soft policy: positions with the anchored vertices at
   /// `anchored_positions` (n×3, other rows ignored); a component without
   /// anchored vertex is translated by the mean offset to `targets` at its
-  /// `constrained` vertices. Returns false when a solve fails.
+  /// `constrained` vertices. Returns false when a solve fails (`result` is
+  /// then unspecified).
   bool transfer_soft(const Positions& smooth_deformed, const Positions& anchored_positions,
                      const std::vector<int>& constrained, const Positions& targets,
                      Positions& result) const
   {
     if(!m_soft_ready)
       return false;
-    Eigen::MatrixXd prescribed = anchored_positions;
+    Positions& prescribed = m_soft_prescribed;
+    prescribed = anchored_positions;
     for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
       if(m_floating[static_cast<std::size_t>(m_component[static_cast<std::size_t>(i)])])
         prescribed.row(i).setZero(); // the pinned vertex, whichever it is
-    Eigen::MatrixXd y;
+    Positions& y = result;
     if(!m_soft.solve(right_hand_side(smooth_deformed), prescribed, y))
       return false;
     Eigen::MatrixXd offset = Eigen::MatrixXd::Zero(m_number_of_components, 3);
@@ -188,23 +192,21 @@ public:
     for(int c = 0; c < m_number_of_components; ++c)
       if(count[c] > 0)
         offset.row(c) /= count[c];
-    result.resize(m_rest.rows(), 3);
     for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
-      result.row(i) = y.row(i) + offset.row(m_component[static_cast<std::size_t>(i)]);
+      result.row(i) += offset.row(m_component[static_cast<std::size_t>(i)]);
     return result.allFinite();
   }
 
   /// Exact policy: positions with the prescribed vertices at `prescribed_positions`
-  /// (n×3, rows of other vertices ignored).
+  /// (n×3, rows of other vertices ignored). Returns false when the solve
+  /// fails (`result` is then unspecified).
   bool transfer_exact(const Positions& smooth_deformed, const Positions& prescribed_positions,
                       Positions& result) const
   {
     if(!m_dirichlet_ready)
       return false;
-    Eigen::MatrixXd y;
-    if(!m_dirichlet.solve(right_hand_side(smooth_deformed), prescribed_positions, y))
+    if(!m_dirichlet.solve(right_hand_side(smooth_deformed), prescribed_positions, result))
       return false;
-    result = y;
     return result.allFinite();
   }
 
@@ -224,7 +226,11 @@ private:
   Eigen::Matrix<double, 3, Eigen::Dynamic> m_own_half, m_half_edges;
   Eigen::SparseMatrix<double> m_stiffness;
   Smooth_rotation_field m_rotations;
+  // Buffers of a transfer, kept between calls: on large meshes, fresh pages
+  // for them cost more than the arithmetic.
   mutable std::vector<Eigen::Matrix3d> m_rotation_workspace;
+  mutable Eigen::MatrixXd m_right_hand_side;
+  mutable Positions m_soft_prescribed;
   std::vector<int> m_component;
   int m_number_of_components = 0;
   Dirichlet_system<SparseSPDSolverTraits> m_soft;

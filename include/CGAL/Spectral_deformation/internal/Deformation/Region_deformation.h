@@ -105,6 +105,7 @@ public:
   void drop_region()
   {
     m_region.reset();
+    m_result = Positions();
     m_constraints_valid = false;
   }
 
@@ -196,7 +197,7 @@ public:
     m_deform_report.success = reported(m_deform_report, [&] {
       Region& region = *m_region;
       const Positions targets = constrained_targets(selection);
-      Positions result;
+      Positions& result = m_result;
       region.pipeline.deform(region, m_constraints, targets, std::max(1u, iterations), tolerance, result,
                              m_deform_report);
       report_residuals(result, targets);
@@ -351,6 +352,7 @@ private:
   bool m_process_wide_tuning = false;
 
   std::unique_ptr<Region> m_region;
+  Positions m_result; // of the last drag, its storage kept for the next one
   bool m_constraints_valid = false;
   Constraint_set m_constraints;
 

@@ -106,6 +106,8 @@ public:
     multiply(coefficients, result);
     return result;
   }
+  /// As `shape()`, into `result`, whose storage is reused.
+  void shape(const Eigen::MatrixXd& coefficients, Positions& result) const { multiply(coefficients, result); }
   const Eigen::MatrixXd& rest_coefficients() const { return m_rest_coefficients; }
   /// H_c: the rows of the basis of the constrained vertices of `preprocess()`.
   const Eigen::MatrixXd& constrained_rows() const { return m_constrained_rows; }

@@ -130,7 +130,8 @@ public:
     report.solve_seconds = seconds_since(start);
 
     const auto transfer_start = std::chrono::steady_clock::now();
-    const Positions smooth_deformed = m_solver.shape(m_pending);
+    Positions& smooth_deformed = m_smooth_deformed;
+    m_solver.shape(m_pending, smooth_deformed);
     const bool transferred = (m_policy == EXACT_CONSTRAINTS)
                                  ? transfer_exact(region, set, targets, smooth_deformed, result)
                                  : transfer_soft(region, set, targets, smooth_deformed, result);
@@ -166,9 +167,10 @@ public:
 
 private:
   bool transfer_exact(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
-                      const Positions& smooth_deformed, Positions& result) const
+                      const Positions& smooth_deformed, Positions& result)
   {
-    Positions prescribed(region.arrays.positions.rows(), 3);
+    Positions& prescribed = m_prescribed;
+    prescribed.resize(region.arrays.positions.rows(), 3);
     for(std::size_t k = 0; k < set.size(); ++k)
       prescribed.row(set.constrained[k]) = targets.row(static_cast<Eigen::Index>(k));
     return m_detail.transfer_exact(smooth_deformed, prescribed, result);
@@ -177,10 +179,11 @@ private:
   // The fixed vertices around the ROI are anchored: only the control
   // vertices are soft.
   bool transfer_soft(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
-                     const Positions& smooth_deformed, Positions& result) const
+                     const Positions& smooth_deformed, Positions& result)
   {
     const Positions& rest = region.arrays.positions;
-    Positions anchored(rest.rows(), 3);
+    Positions& anchored = m_prescribed;
+    anchored.resize(rest.rows(), 3);
     for(std::size_t i = 0; i < region.is_fixed.size(); ++i)
       if(region.is_fixed[i])
         anchored.row(static_cast<Eigen::Index>(i)) = rest.row(static_cast<Eigen::Index>(i));
@@ -217,6 +220,9 @@ private:
   Detail_transfer<SparseSPDSolverTraits> m_detail;
   Spectral_constraint_policy m_policy = EXACT_CONSTRAINTS;
   Eigen::MatrixXd m_coefficients, m_pending;
+  // Buffers of a drag, kept between drags: on large meshes, fresh pages for
+  // them cost more than the arithmetic.
+  Positions m_smooth_deformed, m_prescribed;
   bool m_has_solution = false;
 };
 

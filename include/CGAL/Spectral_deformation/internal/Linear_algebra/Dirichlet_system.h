@@ -64,20 +64,28 @@ public:
 
   /// Solves with the right-hand side `rhs` (n×d) and the values of the
   /// prescribed unknowns taken from `prescribed_values` (n×d, other rows
-  /// ignored); `out` is n×d with the prescribed rows copied.
-  bool solve(const Eigen::MatrixXd& rhs, const Eigen::MatrixXd& prescribed_values,
-             Eigen::MatrixXd& out) const
+  /// ignored); `out` is n×d with the prescribed rows copied. `out` may be
+  /// `prescribed_values` itself.
+  template <class Values, class Out>
+  bool solve(const Eigen::MatrixXd& rhs, const Values& prescribed_values, Out& out) const
   {
     const Eigen::Index m = static_cast<Eigen::Index>(m_free.size());
-    out = prescribed_values;
+    // The buffers are kept between calls: on large meshes, fresh pages for
+    // them cost more than the arithmetic.
+    Eigen::MatrixXd& b = m_free_rhs;
+    Eigen::MatrixXd& x = m_free_solution;
+    if(m > 0)
+    {
+      // The coupling block has prescribed columns only: free rows are not read.
+      m_coupled.noalias() = m_coupling * prescribed_values;
+      b.resize(m, rhs.cols());
+      for(Eigen::Index r = 0; r < m; ++r)
+        b.row(r) = rhs.row(m_free[static_cast<std::size_t>(r)]) - m_coupled.row(r);
+    }
+    if(static_cast<const void*>(&out) != static_cast<const void*>(&prescribed_values))
+      out = prescribed_values;
     if(m == 0)
       return true;
-    // The coupling block has prescribed columns only: free rows are not read.
-    const Eigen::MatrixXd coupled = m_coupling * prescribed_values;
-    Eigen::MatrixXd b(m, rhs.cols());
-    for(Eigen::Index r = 0; r < m; ++r)
-      b.row(r) = rhs.row(m_free[static_cast<std::size_t>(r)]) - coupled.row(r);
-    Eigen::MatrixXd x;
     if(!m_solver.solve(b, x))
       return false;
     for(Eigen::Index r = 0; r < m; ++r)
@@ -94,6 +102,7 @@ private:
   std::vector<int> m_free;
   std::vector<int> m_free_index;
   Eigen::SparseMatrix<double> m_coupling;
+  mutable Eigen::MatrixXd m_coupled, m_free_rhs, m_free_solution;
 };
 
 } // namespace Linear_algebra
