@@ -393,6 +393,44 @@ TEST_CASE("process-wide tuning is an opt-in of every algorithm and does not chan
   CHECK(distance(spectral, spectral_tuned) < 1e-9);
 }
 
+// Process-wide tuning changes how fast the factorizations and the basis are
+// made, not what they are: switched on a prepared region, it keeps the basis,
+// and the next constraint set, factored with it, gives the same result.
+TEST_CASE("process-wide tuning switched on a prepared region keeps the basis and the results", "[deformation]")
+{
+  Surface_mesh tuned_mesh = to_mesh<Surface_mesh>(bar(16, 3));
+  Surface_mesh plain_mesh = tuned_mesh;
+  Spectral tuned(tuned_mesh), plain(plain_mesh);
+  std::vector<SM_vertex> bottom, top;
+  select_ends(tuned_mesh, 0.3, 4.7, bottom, top);
+  const auto all = vertex_list(tuned_mesh);
+  const SM_vertex middle = all[all.size() / 2];
+  for(Spectral* deformation : {&tuned, &plain})
+  {
+    deformation->insert_roi_vertices(all.begin(), all.end());
+    deformation->insert_control_vertices(bottom.begin(), bottom.end());
+    deformation->insert_control_vertices(top.begin(), top.end());
+    deformation->set_number_of_frequencies(60);
+    deformation->translate(top.begin(), top.end(), Eigen::Vector3d(0.5, 0, 0));
+    deformation->deform(3, 0.0);
+    REQUIRE(deformation->deform_report().success);
+  }
+  tuned.set_process_wide_tuning(true);
+  CHECK(tuned.process_wide_tuning());
+  for(Spectral* deformation : {&tuned, &plain})
+  {
+    // A new constraint set: the detail transfer is factored again.
+    deformation->insert_control_vertex(middle);
+    deformation->translate(top.begin(), top.end(), Eigen::Vector3d(0.25, 0, 0));
+    deformation->deform(3, 0.0);
+    REQUIRE(deformation->deform_report().success);
+    CHECK_FALSE(deformation->preprocess_report().basis_computed);
+  }
+  CHECK(positions_of(tuned_mesh) == positions_of(plain_mesh));
+  tuned.set_process_wide_tuning(false);
+  CHECK_FALSE(tuned.process_wide_tuning());
+}
+
 TEST_CASE("reset, continued iteration and overwrite_initial_geometry", "[deformation]")
 {
   Surface_mesh mesh = to_mesh<Surface_mesh>(bar(16, 3));

@@ -502,8 +502,9 @@ public:
   bool process_wide_tuning() const { return m_computation.process_wide_tuning(); }
   /// Sets `process_wide_tuning()`, for programs that own their process; it
   /// applies to the eigensolver traits (when they have the option) and to the
-  /// sparse solvers of the detail transfer or of the spatial solver. The
-  /// region is rebuilt, basis included, by the next `preprocess()`.
+  /// sparse solvers of the detail transfer or of the spatial solver, from
+  /// their next factorization or basis; the region, its basis and its
+  /// factorizations are kept.
   void set_process_wide_tuning(bool enabled) { m_computation.set_process_wide_tuning(enabled); }
 
   /// @}

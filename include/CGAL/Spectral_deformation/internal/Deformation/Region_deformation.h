@@ -78,15 +78,16 @@ public:
       return m_process_wide_tuning;
   }
 
-  /// Takes effect when the region is next built (the spectral pipelines:
-  /// when the eigensolver traits support the option).
+  /// Takes effect at the next factorization and, for the eigensolver, at
+  /// the next basis (the spectral pipelines: when the eigensolver traits
+  /// support the option). The region, its basis and its factorizations are
+  /// kept: the setting changes how fast they are made, not what they are.
   void set_process_wide_tuning(bool enabled)
   {
-    if(enabled == m_process_wide_tuning && enabled == process_wide_tuning())
-      return;
     Memory::set_process_wide_tuning_if_supported(m_eigensolver, enabled);
     m_process_wide_tuning = enabled;
-    drop_region();
+    if(m_region)
+      m_region->pipeline.set_process_wide_tuning(process_wide_tuning());
   }
 
   const Spectral_preprocess_report& preprocess_report() const { return m_preprocess_report; }

@@ -42,6 +42,13 @@ public:
     m_has_solution = false;
   }
 
+  /// See `Spatial_dual_laplacian_solver::set_process_wide_tuning()`.
+  void set_process_wide_tuning(bool enabled)
+  {
+    if(m_solver)
+      m_solver->set_process_wide_tuning(enabled);
+  }
+
   void prepare(const Region_geometry&, const Constraint_set& set) { m_solver->preprocess_exact(set.constrained); }
 
   /// The positions of the region for the `targets` of the constrained

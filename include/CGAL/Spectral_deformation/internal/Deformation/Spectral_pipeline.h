@@ -151,6 +151,8 @@ public:
   /// The next `deform()` starts from the rest shape.
   void restart() { m_has_solution = false; }
 
+  /// See `Detail_transfer::set_process_wide_tuning()`.
+  void set_process_wide_tuning(bool enabled) { m_detail.set_process_wide_tuning(enabled); }
   void set_single_precision(bool single) { m_solver.set_single_precision(single); }
   void set_rotation_patches(std::size_t count) { m_solver.set_rotation_patches(count); }
   const Basis_data& basis() const { return m_basis; }
