@@ -155,6 +155,10 @@ public:
           rotations[static_cast<std::size_t>(i)] = nearest_rotation(C[static_cast<std::size_t>(i)]);
       }
     }
+    // The inherited covariances layer after layer, in order; then the
+    // rotations of the inheriting vertices, which are independent of each
+    // other, on all threads (their nearly rank-one covariances often take the
+    // slower path of nearest_rotation()).
     for(std::size_t k = 0; k < m_order.size(); ++k)
     {
       const int begin = m_parent_start[k], end = m_parent_start[k + 1];
@@ -163,6 +167,14 @@ public:
         inherited += C[static_cast<std::size_t>(m_parents[static_cast<std::size_t>(p)])];
       const std::size_t i = static_cast<std::size_t>(m_order[k]);
       C[i] += inherited / double(end - begin);
+    }
+    const std::ptrdiff_t inheriting = static_cast<std::ptrdiff_t>(m_order.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 256) if(inheriting > 2000)
+#endif
+    for(std::ptrdiff_t k = 0; k < inheriting; ++k)
+    {
+      const std::size_t i = static_cast<std::size_t>(m_order[static_cast<std::size_t>(k)]);
       rotations[i] = nearest_rotation(C[i]);
     }
   }
