@@ -18,6 +18,10 @@
 #include <limits>
 #include <random>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 using namespace test_meshes;
 namespace internal = CGAL::Spectral_deformation::internal;
 
@@ -232,6 +236,60 @@ TEST_CASE("smooth rotation field: a one-ring squeezed into a line inherits the r
   for(const Eigen::Matrix3d& R : rotations)
     worst = std::max(worst, (R - Eigen::Matrix3d::Identity()).norm());
   CHECK(worst < 1e-6);
+}
+
+TEST_CASE("smooth rotation field: one thread and all threads give the same bits",
+          "[detail_transfer]")
+{
+  // A grid large enough for the parallel loops (over 20,000 vertices, over
+  // 2,000 of them inheriting), its right half squeezed to a line, turned by
+  // a non-rigid map so that every rotation differs.
+  const Soup grid = bumpy_plane(160, 0.02);
+  internal::Mesh::Triangle_arrays detailed;
+  detailed.triangles.resize(static_cast<Eigen::Index>(grid.triangles.size()), 3);
+  for(std::size_t f = 0; f < grid.triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+      detailed.triangles(static_cast<Eigen::Index>(f), k) =
+          static_cast<int>(grid.triangles[f][static_cast<std::size_t>(k)]);
+  detailed.positions.resize(static_cast<Eigen::Index>(grid.points.size()), 3);
+  internal::Mesh::Positions rest(detailed.positions.rows(), 3);
+  for(std::size_t i = 0; i < grid.points.size(); ++i)
+  {
+    const Point& p = grid.points[i];
+    detailed.positions.row(static_cast<Eigen::Index>(i)) << p.x(), p.y(), p.z();
+    rest.row(static_cast<Eigen::Index>(i)) << p.x(), (p.x() > 0.5 ? 1e-9 * p.y() : p.y()), p.z();
+  }
+  REQUIRE(rest.rows() > 20000);
+  internal::Deformation::Smooth_rotation_field field;
+  field.initialize(internal::cotangent_stiffness(detailed), rest);
+  REQUIRE(field.number_of_undetermined_vertices() > 2000);
+
+  internal::Mesh::Positions deformed(rest.rows(), 3);
+  for(Eigen::Index i = 0; i < rest.rows(); ++i)
+  {
+    const double angle = 1.5 * rest(i, 0);
+    deformed.row(i) = (Eigen::AngleAxisd(angle, Eigen::Vector3d(0.2, 1, 0.1).normalized()) *
+                       rest.row(i).transpose())
+                          .transpose();
+  }
+  std::vector<Eigen::Matrix3d> on_all_threads, on_one_thread;
+  field.compute(deformed, on_all_threads);
+#ifdef _OPENMP
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+#endif
+  field.compute(deformed, on_one_thread);
+#ifdef _OPENMP
+  omp_set_num_threads(threads);
+#endif
+  REQUIRE(on_all_threads.size() == on_one_thread.size());
+  std::size_t different = 0;
+  for(std::size_t i = 0; i < on_one_thread.size(); ++i)
+    if(on_all_threads[i] != on_one_thread[i])
+      ++different;
+  CHECK(different == 0);
+  // The inherited rotations are not all alike: the map bends the squeezed half.
+  CHECK((on_one_thread.front() - on_one_thread.back()).norm() > 0.1);
 }
 
 TEST_CASE("a thin spike far from the handle neither folds nor stretches, at two resolutions",
