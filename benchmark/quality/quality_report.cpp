@@ -99,6 +99,7 @@ struct Options
   std::vector<std::string> only;     // names of the cases to run; empty: all
   std::size_t frequencies = 100;
   std::size_t rotation_patches = 0;          // of the spectral algorithms; 0: the full iteration
+  CGAL::Spectral_smooth_energy smooth_energy = CGAL::DUAL_LAPLACIAN_ENERGY; // of the iteration
   unsigned int long_iterations = 1000;      // of the additional runs
   unsigned int arap_large_iterations = 200; // of the additional CGAL runs on large ROIs
   std::size_t large_roi = 20000;
@@ -123,6 +124,7 @@ void print_usage(const char* program)
       << "  --only a,b,...                run only the cases of these names\n"
       << "  --frequencies m               basis size of the spectral algorithms (default 100)\n"
       << "  --rotation-patches k          rotation patches of the iteration (default 0: full)\n"
+      << "  --smooth-energy E             dual-laplacian (default) or arap: the energy of the iteration\n"
       << "  --long-iterations N           iteration cap of the additional runs made when the\n"
       << "                                default deform() does not converge (default 1000)\n"
       << "  --large-roi N                 ROIs with more vertices are large (default 20000)\n"
@@ -189,6 +191,16 @@ Options parse_options(int argc, char** argv)
       options.only = split(value(), ',');
     else if(argument == "--frequencies")
       options.frequencies = to_positive_int(value(), argument);
+    else if(argument == "--smooth-energy")
+    {
+      const std::string energy = value();
+      if(energy == "arap")
+        options.smooth_energy = CGAL::ARAP_ENERGY;
+      else if(energy == "dual-laplacian")
+        options.smooth_energy = CGAL::DUAL_LAPLACIAN_ENERGY;
+      else
+        throw std::invalid_argument("--smooth-energy: dual-laplacian or arap");
+    }
     else if(argument == "--rotation-patches")
       options.rotation_patches = static_cast<std::size_t>(std::stoul(value()));
     else if(argument == "--long-iterations")
@@ -394,6 +406,7 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
   {
     deformation.set_number_of_frequencies(options.frequencies);
     deformation.set_rotation_patches(options.rotation_patches);
+    deformation.set_smooth_energy(options.smooth_energy);
     deformation.set_constraint_policy(policy);
     // This program owns its process: the solvers may change process-wide
     // state (OpenBLAS threads, SuiteSparse's allocator) to run faster.
@@ -691,7 +704,9 @@ void write_report(const std::string& filename, const Options& options, const Run
       << EIGEN_MAJOR_VERSION << "." << EIGEN_MINOR_VERSION << ", Spectra " << SPECTRA_MAJOR_VERSION
       << "." << SPECTRA_MINOR_VERSION << "." << SPECTRA_PATCH_VERSION
       << "; sparse SPD solver of this package: " << sparse_solver() << "\n"
-      << "- Settings: m = " << options.frequencies << ", rotation patches " << options.rotation_patches
+      << "- Settings: m = " << options.frequencies << ", smooth energy "
+      << (options.smooth_energy == CGAL::ARAP_ENERGY ? "ARAP" : "dual Laplacian") << ", rotation patches "
+      << options.rotation_patches
       << " (0: the full iteration), additional runs `deform("
       << options.long_iterations << ", 1e-4)` (CGAL on ROIs above " << options.large_roi
       << " vertices: " << options.arap_large_iterations

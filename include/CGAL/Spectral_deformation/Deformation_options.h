@@ -58,6 +58,22 @@ enum Spectral_constraint_policy {
   SOFT_CONSTRAINTS
 };
 
+enum Spectral_smooth_energy {
+  /// The paper's (the default): dual Laplacian editing. Each iteration turns
+  /// the dual Laplacian coordinates of the smooth rest mesh to the normals
+  /// of the current smooth mesh and solves the reduced least squares system.
+  DUAL_LAPLACIAN_ENERGY,
+  /// The as-rigid-as-possible energy of the smooth mesh (Sorkine and Alexa
+  /// 2007) minimized in the space of the basis: each iteration fits a
+  /// rotation to every one-ring of the current smooth mesh (or to every
+  /// rotation patch) and solves the reduced system whose matrix is
+  /// \f$ H^T Q H \f$, \f$ Q \f$ the cotangent stiffness. Unlike dual Laplacian
+  /// editing, the rotations turn the edges about the surface's normal too, so
+  /// twisted tubes keep their section; bends of open sheets spread less
+  /// evenly within ten iterations.
+  ARAP_ENERGY
+};
+
 } // namespace CGAL
 
 #endif // CGAL_SPECTRAL_DEFORMATION_DEFORMATION_OPTIONS_H

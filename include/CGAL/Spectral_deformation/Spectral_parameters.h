@@ -126,6 +126,25 @@ public:
     m_computation.set_rotation_patches(count);
   }
 
+  /// The energy the iteration of `deform()` minimizes in the space of the
+  /// basis (default `DUAL_LAPLACIAN_ENERGY`, the paper's).
+  Spectral_smooth_energy smooth_energy() const { return m_computation.settings().smooth_energy; }
+  /// Sets the energy the iteration minimizes. `ARAP_ENERGY` keeps twisted
+  /// tubes round where dual Laplacian editing pinches them (see the
+  /// manual's section on the choice of the energy); it works with rotation
+  /// patches too. A change recomputes the reduced matrices, not the basis,
+  /// and the next `deform()` starts from the rest shape; it is a change of
+  /// the constraint set. `SPECTRAL_LINEAR` does not iterate and ignores it.
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `energy`
+  /// is not one of the enumerators.
+  void set_smooth_energy(Spectral_smooth_energy energy)
+  {
+    static_assert(is_spectral, "set_smooth_energy(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    if(energy != DUAL_LAPLACIAN_ENERGY && energy != ARAP_ENERGY)
+      throw Error(Error::INVALID_ARGUMENT, "unknown smooth energy");
+    m_computation.set_smooth_energy(energy);
+  }
+
   /// @}
 
   /// \name Basis cache

@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_CLUSTERED_ROTATIONS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_CLUSTERED_ROTATIONS_H
 
+#include <CGAL/Spectral_deformation/internal/Deformation/Smooth_rotation_field.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/rigid_fit.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
@@ -18,6 +19,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -150,6 +152,46 @@ inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const 
   return result;
 }
 
+/// Groups the `n` vertices of the faces of `dual` into about `count`
+/// patches as `cluster_dual_rows()` groups its rows: the faces are grouped
+/// and every vertex joins the patch of one of its faces. Returns the patch
+/// of each vertex, numbered from 0 without gaps (-1 for a vertex of no
+/// face); `count` at least `n` gives every vertex its own patch.
+inline std::vector<int> cluster_vertices(const Dual_mesh_operator& dual, const Positions& centroids,
+                                         Eigen::Index n, std::size_t count)
+{
+  std::vector<int> result(static_cast<std::size_t>(n), -1);
+  const Triangles& triangles = dual.triangles();
+  if(count >= static_cast<std::size_t>(n))
+  {
+    for(Eigen::Index f = 0; f < triangles.rows(); ++f)
+      for(int k = 0; k < 3; ++k)
+        result[static_cast<std::size_t>(triangles(f, k))] = triangles(f, k);
+  }
+  else
+  {
+    count = (std::max<std::size_t>)(count, 1);
+    const std::vector<int> seeds =
+        farthest_point_seeds(centroids, static_cast<std::size_t>(dual.number_of_faces()), count);
+    std::vector<int> patch_of_face;
+    grow_patches(dual, seeds, patch_of_face);
+    for(Eigen::Index f = 0; f < triangles.rows(); ++f)
+      for(int k = 0; k < 3; ++k)
+        result[static_cast<std::size_t>(triangles(f, k))] = patch_of_face[static_cast<std::size_t>(f)];
+  }
+  std::vector<int> renumbered(static_cast<std::size_t>(n), -1);
+  int used = 0;
+  for(int& patch : result)
+    if(patch >= 0)
+    {
+      int& id = renumbered[static_cast<std::size_t>(patch)];
+      if(id < 0)
+        id = used++;
+      patch = id;
+    }
+  return result;
+}
+
 /// The right-hand side of the reduced dual Laplacian iteration with one
 /// rotation per patch of dual vertices instead of one per dual vertex.
 ///
@@ -164,6 +206,15 @@ inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const 
 /// O(m × patches), independent of the size of the mesh. With one patch per
 /// row, R_C takes the rest normal of the row exactly to its current one, and
 /// the iteration is the full one.
+///
+/// The as-rigid-as-possible iteration (`initialize_arap()`) has the same
+/// form. With one rotation R_C per patch C of vertices, the covariance of
+/// the patch, Σ_{i∈C} Σ_j |w_ij| (x_i − x_j)(s_i − s_j)ᵀ with x = H c and s
+/// the smooth rest positions, is cᵀ P_C with
+/// P_C = Σ_{i∈C} Σ_j |w_ij| (H_i − H_j)ᵀ (s_i − s_j); and Hᵀ b, b the
+/// right-hand side Σ_j w_ij ½(R_i + R_j)(s_i − s_j) of its global step, is
+/// Σ_C K_C R_Cᵀ with K_C = Σ_{i∈C} Σ_j ½ w_ij (H_i − H_j)ᵀ (s_i − s_j). With
+/// one patch per vertex, it is the full as-rigid-as-possible iteration.
 class Clustered_rotation_rhs
 {
 public:
@@ -192,6 +243,94 @@ public:
     const std::vector<std::vector<Contribution>> gathered =
         gather_contributions(dual, weights, coordinates, smooth_rest, start, rows_by_patch, basis.rows());
     accumulate_products(basis, gathered);
+  }
+
+  /// The as-rigid-as-possible form: `basis` n×m, `adjacency` the edges and
+  /// weights of the cotangent stiffness, `smooth_rest` the rest positions of
+  /// the iteration, `patch_of_vertex` from `cluster_vertices()`.
+  void initialize_arap(const Eigen::MatrixXd& basis, const Cotangent_adjacency& adjacency,
+                       const Positions& smooth_rest, const std::vector<int>& patch_of_vertex)
+  {
+    const Eigen::Index m = basis.cols();
+    const int patches =
+        patch_of_vertex.empty() ? 0 : *std::max_element(patch_of_vertex.begin(), patch_of_vertex.end()) + 1;
+    m_patches = (std::max)(patches, 0);
+    m_rotations.resize(3 * m_patches, 3);
+    for(int p = 0; p < m_patches; ++p)
+      m_rotations.middleRows<3>(3 * p).setIdentity();
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(adjacency.number_of_vertices());
+    int threads = 1;
+#ifdef _OPENMP
+    if(n > 20000)
+      threads = omp_get_max_threads();
+#endif
+    // Each thread sums the rows of its share of the vertices into its own
+    // copy of K and P.
+    std::vector<Eigen::MatrixXd> K(static_cast<std::size_t>(threads)), P(static_cast<std::size_t>(threads));
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if(threads > 1)
+#endif
+    {
+      int thread = 0;
+#ifdef _OPENMP
+      thread = omp_get_thread_num();
+#endif
+      Eigen::MatrixXd& my_K = K[static_cast<std::size_t>(thread)];
+      Eigen::MatrixXd& my_P = P[static_cast<std::size_t>(thread)];
+      my_K.setZero(m, 3 * m_patches);
+      my_P.setZero(m, 3 * m_patches);
+      // What vertex i puts on each patch: the patch of i and the patches of
+      // its neighbours get w_ij (s_i − s_j) for every edge ij (the term of
+      // the ordered pair ji has the opposite edge and the opposite sign).
+      struct Load
+      {
+        int patch;
+        Eigen::RowVector3d half, absolute;
+      };
+      std::vector<Load> loads;
+      Eigen::VectorXd h(m);
+      const std::ptrdiff_t first = n * thread / threads, last = n * (thread + 1) / threads;
+      for(std::ptrdiff_t i = first; i < last; ++i)
+      {
+        const int own = patch_of_vertex[static_cast<std::size_t>(i)];
+        if(own < 0)
+          continue;
+        loads.clear();
+        auto add = [&loads](int patch, const Eigen::RowVector3d& half, const Eigen::RowVector3d& absolute) {
+          for(Load& load : loads)
+            if(load.patch == patch)
+            {
+              load.half += half;
+              load.absolute += absolute;
+              return;
+            }
+          loads.push_back(Load{patch, half, absolute});
+        };
+        for(int s = adjacency.start[static_cast<std::size_t>(i)]; s < adjacency.start[static_cast<std::size_t>(i) + 1];
+            ++s)
+        {
+          const int j = adjacency.neighbours[static_cast<std::size_t>(s)];
+          const double w = adjacency.weights[static_cast<std::size_t>(s)];
+          const Eigen::RowVector3d edge = smooth_rest.row(i) - smooth_rest.row(j);
+          add(own, 0.5 * w * edge, std::abs(w) * edge);
+          add(patch_of_vertex[static_cast<std::size_t>(j)], 0.5 * w * edge, std::abs(w) * edge);
+        }
+        for(Eigen::Index k = 0; k < m; ++k)
+          h[k] = basis(i, k);
+        for(const Load& load : loads)
+        {
+          my_K.middleCols<3>(3 * load.patch).noalias() += h * load.half;
+          my_P.middleCols<3>(3 * load.patch).noalias() += h * load.absolute;
+        }
+      }
+    }
+    m_K = std::move(K[0]);
+    m_P = std::move(P[0]);
+    for(std::size_t t = 1; t < K.size(); ++t)
+    {
+      m_K += K[t];
+      m_P += P[t];
+    }
   }
 
   int number_of_patches() const { return m_patches; }

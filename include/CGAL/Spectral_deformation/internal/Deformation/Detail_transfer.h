@@ -10,7 +10,7 @@
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Dirichlet_system.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Smooth_rotation_field.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Rotated_edges.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
 #include <Eigen/Dense>
@@ -71,21 +71,7 @@ public:
     m_stiffness = cotangent_stiffness(detailed);
     if(!smooth_rest.allFinite())
       throw Error(Error::SOLVER_FAILURE, "the smooth mesh has non-finite coordinates");
-    m_rotations.initialize(m_stiffness, smooth_rest);
-    // Σ_j w_ij ½ R_i (v_i − v_j) = R_i b_i: the half of the right-hand side
-    // that turns with the vertex's own rotation is one product per vertex.
-    // The other half turns with the neighbour's rotation: the weighted rest
-    // edges ½ w_ij (v_i − v_j) are stored in the order of the adjacency.
-    const Cotangent_adjacency& a = m_rotations.adjacency();
-    m_own_half.setZero(3, m_rest.rows());
-    m_half_edges.resize(3, static_cast<Eigen::Index>(a.neighbours.size()));
-    for(Eigen::Index i = 0; i < m_rest.rows(); ++i)
-      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
-      {
-        m_half_edges.col(s) = (0.5 * a.weights[static_cast<std::size_t>(s)]) *
-                              (m_rest.row(i) - m_rest.row(a.neighbours[static_cast<std::size_t>(s)])).transpose();
-        m_own_half.col(i) += m_half_edges.col(s);
-      }
+    m_rotated_edges.initialize(m_stiffness, m_rest, smooth_rest);
 
     m_component = connected_components(detailed.triangles, m_rest.rows(), m_number_of_components);
     m_soft_ready = false;
@@ -141,23 +127,7 @@ public:
   /// until the next call).
   const Eigen::MatrixXd& right_hand_side(const Positions& smooth_deformed) const
   {
-    m_rotations.compute(smooth_deformed, m_rotation_workspace);
-    const std::vector<Eigen::Matrix3d>& R = m_rotation_workspace;
-    const Cotangent_adjacency& a = m_rotations.adjacency();
-    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_rest.rows());
-    Eigen::MatrixXd& rhs = m_right_hand_side;
-    rhs.resize(n, 3);
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n > 20000)
-#endif
-    for(std::ptrdiff_t i = 0; i < n; ++i)
-    {
-      Eigen::Vector3d sum = R[static_cast<std::size_t>(i)] * m_own_half.col(i);
-      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
-        sum.noalias() += R[static_cast<std::size_t>(a.neighbours[static_cast<std::size_t>(s)])] * m_half_edges.col(s);
-      rhs.row(i) = sum.transpose();
-    }
-    return rhs;
+    return m_rotated_edges.evaluate(smooth_deformed);
   }
 
   /// Soft policy: positions with the anchored vertices at
@@ -222,14 +192,10 @@ public:
 
 private:
   Positions m_rest;
-  // Per vertex Σ_j ½ w_ij (v_i − v_j), per edge of the adjacency ½ w_ij (v_i − v_j).
-  Eigen::Matrix<double, 3, Eigen::Dynamic> m_own_half, m_half_edges;
   Eigen::SparseMatrix<double> m_stiffness;
-  Smooth_rotation_field m_rotations;
-  // Buffers of a transfer, kept between calls: on large meshes, fresh pages
-  // for them cost more than the arithmetic.
-  mutable std::vector<Eigen::Matrix3d> m_rotation_workspace;
-  mutable Eigen::MatrixXd m_right_hand_side;
+  Rotated_edges m_rotated_edges;
+  // A buffer of a transfer, kept between calls: on large meshes, fresh pages
+  // for it cost more than the arithmetic.
   mutable Positions m_soft_prescribed;
   std::vector<int> m_component;
   int m_number_of_components = 0;

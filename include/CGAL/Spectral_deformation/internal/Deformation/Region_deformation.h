@@ -133,6 +133,18 @@ public:
       m_region->pipeline.set_rotation_patches(count);
   }
 
+  void set_smooth_energy(Spectral_smooth_energy energy)
+  {
+    if(energy == m_settings.smooth_energy)
+      return;
+    m_settings.smooth_energy = energy;
+    if(m_region)
+    {
+      m_region->pipeline.set_smooth_energy(energy, *m_region);
+      m_constraints_valid = false;
+    }
+  }
+
   /// A basis to use for a region on the mesh it was computed on; a region
   /// built with another basis is built again.
   void supply_basis(Basis_data data)

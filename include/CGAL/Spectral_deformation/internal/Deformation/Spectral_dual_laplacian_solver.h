@@ -7,7 +7,10 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPECTRAL_DUAL_LAPLACIAN_SOLVER_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPECTRAL_DUAL_LAPLACIAN_SOLVER_H
 
+#include <CGAL/Spectral_deformation/Deformation_options.h>
+#include <CGAL/Spectral_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Rotated_edges.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
@@ -38,6 +41,15 @@ using Mesh::Triangle_arrays;
 /// Ã = G₀ + w² H_cᵀ H_c, G₀ = Hᵀ (L̂F)ᵀ L̂F H precomputed per mesh. Weights and
 /// signed heights of the dual coordinates are those of the smooth rest mesh
 /// S₀ = H Hᵀ M V, so that the residual at rest is zero.
+///
+/// With `ARAP_ENERGY`, the same iteration minimizes instead the
+/// as-rigid-as-possible energy of the smooth mesh,
+/// Σ_ij w_ij ‖(S_i − S_j) − R_i(S₀_i − S₀_j)‖², plus the constraints:
+/// G₀ = Hᵀ Q H (Q the cotangent stiffness of the region) and the
+/// coordinates' part of the right-hand side is Hᵀ b(R), b the right-hand
+/// side of the global step of as-rigid-as-possible deformation with the
+/// rotations of the one-rings of the current smooth shape
+/// (`Rotated_edges`). At rest b = Q S₀, so the residual at rest is zero too.
 class Spectral_dual_laplacian_solver
 {
 public:
@@ -55,18 +67,35 @@ public:
     m_dual = Dual_mesh_operator(rest.triangles, rest.number_of_vertices());
     m_rest_coefficients = basis.transpose() * (mass.asDiagonal() * rest.positions);
     m_smooth_rest = basis * m_rest_coefficients;
-    m_rest_coordinates = m_dual.evaluate(m_smooth_rest);
-    m_negative_heights = -m_rest_coordinates.heights;
-    const Eigen::SparseMatrix<double> LF = m_dual.laplacian_operator(m_rest_coordinates.weights);
-    const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(LF.transpose()) * LF;
-    // Never form the dense rows×m matrix L̂F H: (LᵀL) H is n×m like H.
-    m_G0 = basis.transpose() * (normal * basis);
+    if(m_energy == ARAP_ENERGY)
+    {
+      m_rest_coordinates = Dual_coordinates();
+      m_negative_heights.resize(0);
+      const Eigen::SparseMatrix<double> Q = cotangent_stiffness(rest);
+      m_rotated_edges.initialize(Q, m_smooth_rest, m_smooth_rest);
+      m_G0 = basis.transpose() * (Q * basis);
+    }
+    else
+    {
+      m_rotated_edges = Rotated_edges();
+      m_rest_coordinates = m_dual.evaluate(m_smooth_rest);
+      m_negative_heights = -m_rest_coordinates.heights;
+      const Eigen::SparseMatrix<double> LF = m_dual.laplacian_operator(m_rest_coordinates.weights);
+      const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(LF.transpose()) * LF;
+      // Never form the dense rows×m matrix L̂F H: (LᵀL) H is n×m like H.
+      m_G0 = basis.transpose() * (normal * basis);
+    }
     m_G0 = 0.5 * (m_G0 + m_G0.transpose()).eval();
     m_scale = std::sqrt(mass.sum()) *
               (rest.positions.colwise().maxCoeff() - rest.positions.colwise().minCoeff()).norm();
     m_factored = false;
     build_patches();
   }
+
+  /// The energy the iteration minimizes (default `DUAL_LAPLACIAN_ENERGY`).
+  Spectral_smooth_energy smooth_energy() const { return m_energy; }
+  /// Sets smooth_energy(); takes effect at the next `initialize()`.
+  void set_smooth_energy(Spectral_smooth_energy energy) { m_energy = energy; }
 
   /// The number of rotation patches of the iteration; 0 (the default) turns
   /// every dual vertex by its own rotation, the full iteration.
@@ -176,6 +205,21 @@ public:
     }
     Workspace& w = m_workspace;
     multiply(current, w.shape);
+    if(m_energy == ARAP_ENERGY)
+    {
+      for(int iteration = 0; iteration <= max_iterations; ++iteration)
+      {
+        // The rest edges of the smooth mesh turned by the rotations of its
+        // current one-rings, brought back to the reduced space: Hᵀ b(R).
+        multiply_transpose(m_rotated_edges.evaluate(w.shape), w.rhs);
+        if(take_step(w.rhs, constraint_rhs, current, iteration, tolerance, report))
+          break;
+        if(iteration < max_iterations)
+          multiply(current, w.shape);
+      }
+      coefficients = current;
+      return report;
+    }
     w.normals = m_rest_coordinates.normals;
     for(int iteration = 0; iteration <= max_iterations; ++iteration)
     {
@@ -209,6 +253,15 @@ private:
     if(m_patch_count == 0)
     {
       m_patches = Clustered_rotation_rhs();
+      return;
+    }
+    if(m_energy == ARAP_ENERGY)
+    {
+      const std::vector<int> patch_of_vertex =
+          cluster_vertices(m_dual, m_dual.centroids(m_smooth_rest), m_smooth_rest.rows(), m_patch_count);
+      m_patches = Clustered_rotation_rhs();
+      m_patches.initialize_arap(*m_basis, m_rotated_edges.rotation_field().adjacency(), m_smooth_rest,
+                                patch_of_vertex);
       return;
     }
     const std::vector<int> patch_of_row =
@@ -269,7 +322,8 @@ private:
       m_panels.multiply(coefficients, shape);
   }
 
-  void multiply_transpose(const Positions& values, Eigen::MatrixXd& result) const
+  template <class Values>
+  void multiply_transpose(const Values& values, Eigen::MatrixXd& result) const
   {
     if(m_single_precision)
       m_float_panels.multiply_transpose(values, result);
@@ -294,7 +348,9 @@ private:
   Dual_mesh_operator m_dual;
   Eigen::MatrixXd m_rest_coefficients;
   Positions m_smooth_rest;
-  Dual_coordinates m_rest_coordinates;
+  Spectral_smooth_energy m_energy = DUAL_LAPLACIAN_ENERGY;
+  Rotated_edges m_rotated_edges; // ARAP_ENERGY
+  Dual_coordinates m_rest_coordinates; // DUAL_LAPLACIAN_ENERGY
   Eigen::VectorXd m_negative_heights;
   Eigen::MatrixXd m_G0;
   double m_scale = 1;

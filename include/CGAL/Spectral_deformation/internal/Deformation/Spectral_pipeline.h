@@ -45,6 +45,7 @@ struct Spectral_settings
   Spectral_constraint_policy policy = EXACT_CONSTRAINTS;
   bool single_precision_basis = false;
   std::size_t rotation_patches = 0;
+  Spectral_smooth_energy smooth_energy = DUAL_LAPLACIAN_ENERGY;
 };
 
 /// The steps of the spectral algorithms for one region: the basis, the
@@ -81,6 +82,9 @@ public:
     }
     m_solver.set_single_precision(settings.single_precision_basis);
     m_solver.set_rotation_patches(settings.rotation_patches);
+    // Without iterations there are no rotations to fit: the linear
+    // algorithm keeps the paper's system.
+    m_solver.set_smooth_energy(Iterated ? settings.smooth_energy : DUAL_LAPLACIAN_ENERGY);
     m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays);
     m_detail.set_process_wide_tuning(process_wide_tuning_of(eigensolver));
     m_detail.initialize(region.arrays, m_solver.smooth_rest());
@@ -155,6 +159,18 @@ public:
   void set_process_wide_tuning(bool enabled) { m_detail.set_process_wide_tuning(enabled); }
   void set_single_precision(bool single) { m_solver.set_single_precision(single); }
   void set_rotation_patches(std::size_t count) { m_solver.set_rotation_patches(count); }
+  /// Sets the energy of the iteration: the reduced matrices are computed
+  /// again (the basis and the detail transfer are kept) and the next
+  /// `deform()` starts from the rest shape; the constraint set must be
+  /// prepared again.
+  void set_smooth_energy(Spectral_smooth_energy energy, const Region_geometry& region)
+  {
+    if(!Iterated || energy == m_solver.smooth_energy())
+      return;
+    m_solver.set_smooth_energy(energy);
+    m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays);
+    m_has_solution = false;
+  }
   const Basis_data& basis() const { return m_basis; }
   std::size_t number_of_frequencies() const { return static_cast<std::size_t>(m_basis.basis.cols()); }
   Eigen::RowVector3d smooth_rest(Eigen::Index i) const { return m_solver.smooth_rest().row(i); }
