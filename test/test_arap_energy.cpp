@@ -1,0 +1,269 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The as-rigid-as-possible energy of the reduced iteration (ARAP_ENERGY):
+// rest and rigid motions reproduced, one patch per vertex equal to the full
+// iteration, the energy decreasing, and a twisted thin tube that keeps its
+// section.
+#include "test_meshes.h"
+
+#include <CGAL/Spectral_surface_mesh_deformation.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <vector>
+
+using namespace test_meshes;
+namespace internal = CGAL::Spectral_deformation::internal;
+typedef boost::graph_traits<Surface_mesh>::vertex_descriptor SM_vertex;
+typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh> Spectral;
+
+namespace {
+
+const double pi = 3.14159265358979323846;
+
+Eigen::MatrixXd positions_of(const Surface_mesh& mesh)
+{
+  Eigen::MatrixXd x(mesh.number_of_vertices(), 3);
+  for(auto v : mesh.vertices())
+    x.row(v.idx()) << mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z();
+  return x;
+}
+
+double diagonal_of(const Eigen::MatrixXd& x) { return (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm(); }
+
+Eigen::Vector3d position(const Surface_mesh& mesh, SM_vertex v)
+{
+  const Point& p = mesh.point(v);
+  return Eigen::Vector3d(p.x(), p.y(), p.z());
+}
+
+// Volume enclosed by a closed, outward-oriented mesh.
+double volume_of(const Surface_mesh& mesh)
+{
+  double volume = 0;
+  for(auto f : mesh.faces())
+  {
+    auto h = mesh.halfedge(f);
+    const Eigen::Vector3d p = position(mesh, mesh.source(h)), q = position(mesh, mesh.target(h)),
+                          r = position(mesh, mesh.target(mesh.next(h)));
+    volume += p.dot(q.cross(r)) / 6.0;
+  }
+  return volume;
+}
+
+std::size_t folded_pairs(const Surface_mesh& rest, const Surface_mesh& mesh)
+{
+  auto normal = [](const Surface_mesh& m, Surface_mesh::Face_index face) {
+    auto h = m.halfedge(face);
+    const Eigen::Vector3d p = position(m, m.source(h)), q = position(m, m.target(h)),
+                          r = position(m, m.target(m.next(h)));
+    return Eigen::Vector3d((q - p).cross(r - p));
+  };
+  std::size_t folded = 0;
+  for(auto e : mesh.edges())
+  {
+    const auto h = mesh.halfedge(e);
+    const auto f = mesh.face(h), g = mesh.face(mesh.opposite(h));
+    if(normal(rest, f).dot(normal(rest, g)) > 0 && normal(mesh, f).dot(normal(mesh, g)) < 0)
+      ++folded;
+  }
+  return folded;
+}
+
+// The bar of test_meshes (radius `radius`, length `length`): the vertices
+// below `low` fixed, those above `high` moved by `top` (a rotation about
+// `axis` through `center`), `patches` rotation patches, `frequencies`.
+struct Bar_setup
+{
+  double radius = 0.5, length = 5.0, low = 0.3, high = 4.7;
+  int rings = 24, per_side = 3;
+  std::size_t frequencies = 60, patches = 0;
+  CGAL::Spectral_smooth_energy energy = CGAL::ARAP_ENERGY;
+  CGAL::Spectral_constraint_policy policy = CGAL::EXACT_CONSTRAINTS;
+};
+
+Surface_mesh deform_bar(const Bar_setup& setup, const Eigen::Matrix3d& top_rotation, const Eigen::Vector3d& center,
+                        unsigned int iterations, double tolerance, CGAL::Spectral_deformation_report* report = nullptr,
+                        bool move_bottom_too = false)
+{
+  Surface_mesh mesh = to_mesh<Surface_mesh>(bar(setup.rings, setup.per_side, setup.radius, setup.length));
+  Spectral deformation(mesh);
+  deformation.insert_roi_vertices(vertices(mesh).begin(), vertices(mesh).end());
+  std::vector<SM_vertex> moved;
+  for(auto v : vertices(mesh))
+  {
+    const double z = mesh.point(v).z();
+    if(z < setup.low || z > setup.high)
+      deformation.insert_control_vertex(v);
+    if(z > setup.high || (move_bottom_too && z < setup.low))
+      moved.push_back(v);
+  }
+  deformation.set_number_of_frequencies(setup.frequencies);
+  deformation.set_rotation_patches(setup.patches);
+  deformation.set_smooth_energy(setup.energy);
+  deformation.set_constraint_policy(setup.policy);
+  for(SM_vertex v : moved)
+  {
+    const Point& p = mesh.point(v);
+    const Eigen::Vector3d q = center + top_rotation * (Eigen::Vector3d(p.x(), p.y(), p.z()) - center);
+    deformation.set_target_position(v, Point(q[0], q[1], q[2]));
+  }
+  deformation.deform(iterations, tolerance);
+  INFO(deformation.deform_report().message);
+  REQUIRE(deformation.deform_report().success);
+  if(report != nullptr)
+    *report = deformation.deform_report();
+  return mesh;
+}
+
+} // namespace
+
+TEST_CASE("ARAP energy: the smooth energy is a setting with a default and a check", "[arap]")
+{
+  Surface_mesh mesh = to_mesh<Surface_mesh>(bar(8, 2));
+  Spectral deformation(mesh);
+  CHECK(deformation.smooth_energy() == CGAL::DUAL_LAPLACIAN_ENERGY);
+  deformation.set_smooth_energy(CGAL::ARAP_ENERGY);
+  CHECK(deformation.smooth_energy() == CGAL::ARAP_ENERGY);
+  CHECK_THROWS_AS(deformation.set_smooth_energy(static_cast<CGAL::Spectral_smooth_energy>(7)),
+                  CGAL::Spectral_deformation_error);
+  CHECK(deformation.smooth_energy() == CGAL::ARAP_ENERGY);
+}
+
+TEST_CASE("ARAP energy: rest targets give the rest shape, a rigid motion of all constraints its rigid image",
+          "[arap]")
+{
+  for(std::size_t patches : {std::size_t(0), std::size_t(40)})
+    for(CGAL::Spectral_constraint_policy policy : {CGAL::EXACT_CONSTRAINTS, CGAL::SOFT_CONSTRAINTS})
+    {
+      Bar_setup setup;
+      setup.patches = patches;
+      setup.policy = policy;
+      INFO("patches " << patches << ", policy " << policy);
+      const Eigen::MatrixXd rest = positions_of(to_mesh<Surface_mesh>(bar(setup.rings, setup.per_side)));
+      const double diagonal = diagonal_of(rest);
+      const Surface_mesh at_rest = deform_bar(setup, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), 10, 0.0);
+      CHECK((positions_of(at_rest) - rest).rowwise().norm().maxCoeff() < 1e-9 * diagonal);
+
+      const Eigen::Matrix3d turn = Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+      CGAL::Spectral_deformation_report report;
+      const Surface_mesh turned = deform_bar(setup, turn, Eigen::Vector3d::Zero(), 2000, 1e-13, &report, true);
+      CHECK(report.converged);
+      CHECK((positions_of(turned) - rest * turn.transpose()).rowwise().norm().maxCoeff() < 1e-8 * diagonal);
+    }
+}
+
+TEST_CASE("ARAP energy: one rotation patch per vertex is the full iteration; fewer patches approach it",
+          "[arap][patches]")
+{
+  const Eigen::Matrix3d bend = Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Vector3d center(0, 0, 5.0);
+  Bar_setup setup;
+  const Eigen::MatrixXd full = positions_of(deform_bar(setup, bend, center, 10, 0.0));
+  const double diagonal = diagonal_of(full);
+  setup.patches = 1000000;
+  const double exact = (positions_of(deform_bar(setup, bend, center, 10, 0.0)) - full).rowwise().norm().maxCoeff();
+  INFO("one patch per vertex: largest distance to the full iteration " << exact / diagonal);
+  CHECK(exact < 1e-9 * diagonal);
+
+  double previous = std::numeric_limits<double>::infinity();
+  for(std::size_t patches : {8, 64, 512})
+  {
+    setup.patches = patches;
+    const double distance =
+        (positions_of(deform_bar(setup, bend, center, 10, 0.0)) - full).rowwise().norm().maxCoeff() / diagonal;
+    INFO(patches << " patches: largest distance to the full iteration " << distance);
+    CHECK(distance < previous);
+    previous = distance;
+  }
+  CHECK(previous < 1e-2);
+}
+
+TEST_CASE("ARAP energy: vertex patches cover every vertex of a face, numbered without gaps", "[arap][patches]")
+{
+  const Soup soup = two_spheres(3);
+  const internal::Mesh::Triangle_arrays arrays =
+      internal::Mesh::extract_triangle_arrays(to_mesh<Surface_mesh>(soup), CGAL::parameters::default_values());
+  const internal::Mesh::Dual_mesh_operator dual(arrays.triangles, arrays.number_of_vertices());
+  const internal::Mesh::Positions centroids = dual.centroids(arrays.positions);
+  for(std::size_t count : {1, 7, 40, 300})
+  {
+    const std::vector<int> patch =
+        internal::Deformation::cluster_vertices(dual, centroids, arrays.number_of_vertices(), count);
+    REQUIRE(patch.size() == static_cast<std::size_t>(arrays.number_of_vertices()));
+    const int patches = *std::max_element(patch.begin(), patch.end()) + 1;
+    INFO(count << " requested, " << patches << " made");
+    CHECK(*std::min_element(patch.begin(), patch.end()) == 0);
+    CHECK(patches >= 2);
+    CHECK(static_cast<std::size_t>(patches) <= (std::max<std::size_t>)(count, 2));
+    std::vector<int> sizes(static_cast<std::size_t>(patches), 0);
+    for(int p : patch)
+      ++sizes[static_cast<std::size_t>(p)];
+    CHECK(*std::min_element(sizes.begin(), sizes.end()) > 0);
+    // Never across the gap between the spheres.
+    std::vector<std::set<bool>> sides(static_cast<std::size_t>(patches));
+    for(std::size_t v = 0; v < patch.size(); ++v)
+      sides[static_cast<std::size_t>(patch[v])].insert(arrays.positions(static_cast<Eigen::Index>(v), 0) > 1.5);
+    for(const std::set<bool>& side : sides)
+      CHECK(side.size() == 1);
+  }
+}
+
+TEST_CASE("ARAP energy: a thin tube twisted by 120 degrees keeps its section and does not fold", "[arap]")
+{
+  // A tube of radius 0.1 and length 1, bottom 5 % fixed, top 5 % turned
+  // about the axis: dual Laplacian editing pinches it (reported below), the
+  // ARAP energy turns the edges about the normals too.
+  Bar_setup setup;
+  setup.radius = 0.1;
+  setup.length = 1.0;
+  setup.low = 0.05;
+  setup.high = 0.95;
+  setup.rings = 200;
+  setup.per_side = 12;
+  setup.frequencies = 100;
+  const Surface_mesh rest = to_mesh<Surface_mesh>(bar(setup.rings, setup.per_side, setup.radius, setup.length));
+  const double rest_volume = volume_of(rest);
+  const Eigen::Matrix3d twist = Eigen::AngleAxisd(2 * pi / 3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::MatrixXd rest_positions = positions_of(rest);
+
+  setup.energy = CGAL::DUAL_LAPLACIAN_ENERGY;
+  const Surface_mesh dual = deform_bar(setup, twist, Eigen::Vector3d::Zero(), 10, 0.0);
+  for(std::size_t patches : {std::size_t(0), std::size_t(300)})
+  {
+    setup.energy = CGAL::ARAP_ENERGY;
+    setup.patches = patches;
+    const Surface_mesh arap = deform_bar(setup, twist, Eigen::Vector3d::Zero(), 10, 0.0);
+    const double arap_kept = volume_of(arap) / rest_volume;
+    const Eigen::MatrixXd x = positions_of(arap);
+    // The section at mid-length: mean distance to the axis.
+    double radius = 0;
+    int count = 0;
+    for(Eigen::Index i = 0; i < x.rows(); ++i)
+      if(std::abs(rest_positions(i, 2) - 0.5) < 0.02)
+      {
+        radius += x.row(i).head<2>().norm();
+        ++count;
+      }
+    radius /= count;
+    const internal::Mesh::Triangle_arrays rest_arrays =
+        internal::Mesh::extract_triangle_arrays(rest, CGAL::parameters::default_values());
+    const double arap_energy = internal::Deformation::arap_energy(rest_arrays, x);
+    const double dual_energy = internal::Deformation::arap_energy(rest_arrays, positions_of(dual));
+    INFO("patches " << patches << ": volume kept " << arap_kept << " (dual Laplacian editing "
+                    << volume_of(dual) / rest_volume << ", " << folded_pairs(rest, dual)
+                    << " folded pairs), mid-length radius " << radius << ", ARAP energy " << arap_energy
+                    << " (dual Laplacian editing " << dual_energy << ")");
+    CHECK(arap_energy < dual_energy);
+    CHECK(arap_kept > 0.9);
+    CHECK(radius > 0.09);
+    CHECK(folded_pairs(rest, arap) == 0);
+  }
+}
