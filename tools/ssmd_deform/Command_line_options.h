@@ -30,6 +30,7 @@ public:
 
 enum class Algorithm { SPECTRAL, LINEAR, SPATIAL };
 enum class Policy { EXACT, SOFT };
+enum class Energy { DUAL_LAPLACIAN, ARAP };
 
 struct Command_line_options
 {
@@ -41,6 +42,7 @@ struct Command_line_options
   std::string basis_cache_file;     // empty: a file of the user's cache folder
   Algorithm algorithm = Algorithm::SPECTRAL;
   Policy policy = Policy::EXACT;
+  Energy energy = Energy::DUAL_LAPLACIAN;
   std::size_t frequencies = 100;
   long long rotation_patches = -1; // negative: the library's default
   unsigned int iterations = 10;
@@ -250,7 +252,7 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
 {
   Command_line_options options;
   std::vector<std::string> files;
-  std::string algorithm = "spectral", policy = "exact";
+  std::string algorithm = "spectral", policy = "exact", energy = "dual-laplacian";
 
   CLI::App app(internal::description_text(), "ssmd_deform");
   app.formatter(std::make_shared<internal::Help_formatter>());
@@ -287,6 +289,14 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
       ->option_text("K")
       ->check(internal::expects("--rotation-patches", "an integer of at least 0", [](const std::string& v) {
         return internal::is_count_at_least(v, 0, static_cast<std::size_t>(-1));
+      }));
+  app.add_option("--energy", energy,
+                 "what the spectral iteration minimizes: dual-laplacian (default, the paper's dual "
+                 "Laplacian editing) or arap (the as-rigid-as-possible energy of the smooth mesh: "
+                 "twisted tubes keep their section).")
+      ->option_text("NAME")
+      ->check(internal::expects("--energy", "dual-laplacian or arap", [](const std::string& v) {
+        return v == "dual-laplacian" || v == "arap";
       }));
   app.add_option("--iterations", options.iterations,
                  "maximal number of solves of the iteration (default 10, at least 1).")
@@ -379,6 +389,7 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
                       : algorithm == "spatial" ? Algorithm::SPATIAL
                                                : Algorithm::SPECTRAL;
   options.policy = policy == "soft" ? Policy::SOFT : Policy::EXACT;
+  options.energy = energy == "arap" ? Energy::ARAP : Energy::DUAL_LAPLACIAN;
   options.use_cache = !no_cache;
 
   if(files.size() == 2)
