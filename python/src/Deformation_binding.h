@@ -54,6 +54,15 @@ inline CGAL::Spectral_constraint_policy policy_from_name(const std::string& name
   throw py::value_error("policy must be 'exact' or 'soft', not '" + name + "'");
 }
 
+inline CGAL::Spectral_smooth_energy energy_from_name(const std::string& name)
+{
+  if(name == "dual_laplacian")
+    return CGAL::DUAL_LAPLACIAN_ENERGY;
+  if(name == "arap")
+    return CGAL::ARAP_ENERGY;
+  throw py::value_error("energy must be 'dual_laplacian' or 'arap', not '" + name + "'");
+}
+
 inline py::dict to_dict(const CGAL::Spectral_preprocess_report& r)
 {
   py::dict d;
@@ -92,6 +101,7 @@ struct Deformation_settings
   std::string algorithm = "spectral";
   std::size_t frequencies = 100;
   std::string policy = "exact";
+  std::string energy = "dual_laplacian";
   double constraint_weight = -1; // negative: the library's default
   bool single_precision_basis = false;
   long long rotation_patches = -1; // negative: the library's default
@@ -332,11 +342,13 @@ private:
   {
     create(algorithm_from_name(m_settings.algorithm));
     const CGAL::Spectral_constraint_policy policy = policy_from_name(m_settings.policy);
+    const CGAL::Spectral_smooth_energy energy = energy_from_name(m_settings.energy);
     visit([&](auto& d) {
       if constexpr(std::decay_t<decltype(d)>::has_basis)
       {
         d.set_number_of_frequencies(m_settings.frequencies);
         d.set_constraint_policy(policy);
+        d.set_smooth_energy(energy);
         if(m_settings.constraint_weight >= 0)
           d.set_constraint_weight(m_settings.constraint_weight);
         d.set_single_precision_basis(m_settings.single_precision_basis);

@@ -99,6 +99,9 @@ to roi; the two must not overlap). m: number of manifold harmonics.
 policy: 'exact' (handles land exactly on their targets) or 'soft'.
 algorithm: 'spectral' (default), 'linear' or 'spatial'. constraint_weight:
 weight of the handles in the reduced system (None: the library's default, 1).
+energy: what the spectral iteration minimizes, 'dual_laplacian' (default, the
+paper's) or 'arap' (the ARAP energy of the smooth mesh: twisted tubes keep
+their section).
 rotation_patches: rotation patches of the iteration (None: the library's
 default; 0: one rotation per dual vertex, the full iteration).
 basis_cache: a file to read the basis from, or to write it to once computed.
@@ -110,7 +113,7 @@ Raises ValueError for every input the library rejects, with its message.
       .def(py::init([warn](const py::handle& V, const py::handle& F, const py::handle& handles,
                            const py::handle& roi, const py::handle& fixed, long long m,
                            const std::string& policy, const std::string& algorithm,
-                           const py::object& constraint_weight, bool single_precision_basis,
+                           const std::string& energy, const py::object& constraint_weight, bool single_precision_basis,
                            const py::object& rotation_patches, const py::object& basis_cache,
                            const py::object& progress) {
              Deformation_settings settings;
@@ -119,6 +122,8 @@ Raises ValueError for every input the library rejects, with its message.
              settings.frequencies = static_cast<std::size_t>(m);
              settings.policy = policy;
              settings.algorithm = algorithm;
+             energy_from_name(energy); // checked here, before the basis
+             settings.energy = energy;
              if(!constraint_weight.is_none())
              {
                const double w = constraint_weight.cast<double>();
@@ -143,7 +148,8 @@ Raises ValueError for every input the library rejects, with its message.
            }),
            py::arg("V"), py::arg("F"), py::kw_only(), py::arg("handles"), py::arg("roi") = py::none(),
            py::arg("fixed") = py::none(), py::arg("m") = 100, py::arg("policy") = "exact",
-           py::arg("algorithm") = "spectral", py::arg("constraint_weight") = py::none(),
+           py::arg("algorithm") = "spectral", py::arg("energy") = "dual_laplacian",
+           py::arg("constraint_weight") = py::none(),
            py::arg("single_precision_basis") = false, py::arg("rotation_patches") = py::none(),
            py::arg("basis_cache") = py::none(),
            py::arg("progress") = py::none())

@@ -79,6 +79,26 @@ def test_rotation_patches(tube_mesh):
                                                                     rotation_patches=-1))
 
 
+def test_arap_energy(tube_mesh):
+    """The ARAP energy: one patch per vertex is its full iteration, and it differs from the default."""
+    V, F, fixed, handles = tube_mesh
+    targets = bent_targets(V, handles)
+
+    def run(energy, patches=None):
+        d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=30, energy=energy,
+                             rotation_patches=patches)
+        d.set_targets(targets)
+        W = d.deform(iterations=6, tolerance=0.0)
+        assert np.max(np.abs(W[handles] - targets)) <= 1e-9
+        return W
+
+    arap = run("arap")
+    diagonal = np.linalg.norm(V.max(axis=0) - V.min(axis=0))
+    assert np.max(np.abs(run("arap", 10**9) - arap)) <= 1e-9 * diagonal
+    assert np.max(np.linalg.norm(run("dual_laplacian") - arap, axis=1)) > 1e-4 * diagonal
+    expect_value_error("energy", lambda: ssmd.Deformation(V, F, fixed=fixed, handles=handles, energy="elastic"))
+
+
 def test_exact_handles_and_fixed_vertices(tube_mesh):
     V, F, fixed, handles = tube_mesh
     V_before, F_before = V.copy(), F.copy()
