@@ -140,13 +140,15 @@ TEST_CASE("ARAP energy: the smooth energy is a setting with a default and a chec
 TEST_CASE("ARAP energy: rest targets give the rest shape, a rigid motion of all constraints its rigid image",
           "[arap]")
 {
+  for(CGAL::Spectral_smooth_energy energy : {CGAL::ARAP_ENERGY, CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY})
   for(std::size_t patches : {std::size_t(0), std::size_t(40)})
     for(CGAL::Spectral_constraint_policy policy : {CGAL::EXACT_CONSTRAINTS, CGAL::SOFT_CONSTRAINTS})
     {
       Bar_setup setup;
+      setup.energy = energy;
       setup.patches = patches;
       setup.policy = policy;
-      INFO("patches " << patches << ", policy " << policy);
+      INFO("energy " << energy << ", patches " << patches << ", policy " << policy);
       const Eigen::MatrixXd rest = positions_of(to_mesh<Surface_mesh>(bar(setup.rings, setup.per_side)));
       const double diagonal = diagonal_of(rest);
       const Surface_mesh at_rest = deform_bar(setup, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), 10, 0.0);
@@ -165,7 +167,11 @@ TEST_CASE("ARAP energy: one rotation patch per vertex is the full iteration; few
 {
   const Eigen::Matrix3d bend = Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()).toRotationMatrix();
   const Eigen::Vector3d center(0, 0, 5.0);
+  for(CGAL::Spectral_smooth_energy energy : {CGAL::ARAP_ENERGY, CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY})
+  {
+  INFO("energy " << energy);
   Bar_setup setup;
+  setup.energy = energy;
   const Eigen::MatrixXd full = positions_of(deform_bar(setup, bend, center, 10, 0.0));
   const double diagonal = diagonal_of(full);
   setup.patches = 1000000;
@@ -184,6 +190,31 @@ TEST_CASE("ARAP energy: one rotation patch per vertex is the full iteration; few
     previous = distance;
   }
   CHECK(previous < 1e-2);
+  }
+}
+
+TEST_CASE("ARAP energy: the sum of the energies lies between the two", "[arap]")
+{
+  // The bar bent by 60 degrees: the ARAP energy of the smooth iteration's
+  // result is lowest with ARAP_ENERGY, highest with the dual Laplacian
+  // energy, in between with their sum; and the three differ.
+  const Eigen::Matrix3d bend = Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Vector3d center(0, 0, 5.0);
+  Bar_setup setup;
+  const Surface_mesh rest = to_mesh<Surface_mesh>(bar(setup.rings, setup.per_side));
+  const internal::Mesh::Triangle_arrays rest_arrays =
+      internal::Mesh::extract_triangle_arrays(rest, CGAL::parameters::default_values());
+  std::vector<double> energies;
+  for(CGAL::Spectral_smooth_energy energy :
+      {CGAL::DUAL_LAPLACIAN_ENERGY, CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY, CGAL::ARAP_ENERGY})
+  {
+    setup.energy = energy;
+    energies.push_back(internal::Deformation::arap_energy(
+        rest_arrays, positions_of(deform_bar(setup, bend, center, 200, 1e-10))));
+  }
+  INFO("ARAP energies: dual Laplacian " << energies[0] << ", sum " << energies[1] << ", ARAP " << energies[2]);
+  CHECK(energies[2] < energies[1]);
+  CHECK(energies[1] < energies[0]);
 }
 
 TEST_CASE("ARAP energy: vertex patches cover every vertex of a face, numbered without gaps", "[arap][patches]")
@@ -236,9 +267,10 @@ TEST_CASE("ARAP energy: a thin tube twisted by 120 degrees keeps its section and
 
   setup.energy = CGAL::DUAL_LAPLACIAN_ENERGY;
   const Surface_mesh dual = deform_bar(setup, twist, Eigen::Vector3d::Zero(), 10, 0.0);
+  for(CGAL::Spectral_smooth_energy energy : {CGAL::ARAP_ENERGY, CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY})
   for(std::size_t patches : {std::size_t(0), std::size_t(300)})
   {
-    setup.energy = CGAL::ARAP_ENERGY;
+    setup.energy = energy;
     setup.patches = patches;
     const Surface_mesh arap = deform_bar(setup, twist, Eigen::Vector3d::Zero(), 10, 0.0);
     const double arap_kept = volume_of(arap) / rest_volume;
@@ -257,7 +289,7 @@ TEST_CASE("ARAP energy: a thin tube twisted by 120 degrees keeps its section and
         internal::Mesh::extract_triangle_arrays(rest, CGAL::parameters::default_values());
     const double arap_energy = internal::Deformation::arap_energy(rest_arrays, x);
     const double dual_energy = internal::Deformation::arap_energy(rest_arrays, positions_of(dual));
-    INFO("patches " << patches << ": volume kept " << arap_kept << " (dual Laplacian editing "
+    INFO("energy " << energy << ", patches " << patches << ": volume kept " << arap_kept << " (dual Laplacian editing "
                     << volume_of(dual) / rest_volume << ", " << folded_pairs(rest, dual)
                     << " folded pairs), mid-length radius " << radius << ", ARAP energy " << arap_energy
                     << " (dual Laplacian editing " << dual_energy << ")");

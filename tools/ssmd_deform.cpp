@@ -397,8 +397,11 @@ private:
       deformation->set_number_of_frequencies(m_options.frequencies);
       if(m_options.rotation_patches >= 0)
         deformation->set_rotation_patches(static_cast<std::size_t>(m_options.rotation_patches));
-      deformation->set_smooth_energy(m_options.energy == Deformation_tool::Energy::ARAP ? CGAL::ARAP_ENERGY
-                                                                      : CGAL::DUAL_LAPLACIAN_ENERGY);
+      deformation->set_smooth_energy(
+          m_options.energy == Deformation_tool::Energy::ARAP ? CGAL::ARAP_ENERGY
+          : m_options.energy == Deformation_tool::Energy::DUAL_LAPLACIAN_AND_ARAP
+              ? CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY
+              : CGAL::DUAL_LAPLACIAN_ENERGY);
       deformation->set_constraint_weight(m_options.constraint_weight);
       deformation->set_constraint_policy(m_options.policy == Deformation_tool::Policy::EXACT
                                              ? CGAL::EXACT_CONSTRAINTS

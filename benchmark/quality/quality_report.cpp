@@ -124,7 +124,8 @@ void print_usage(const char* program)
       << "  --only a,b,...                run only the cases of these names\n"
       << "  --frequencies m               basis size of the spectral algorithms (default 100)\n"
       << "  --rotation-patches k          rotation patches of the iteration (default 0: full)\n"
-      << "  --smooth-energy E             dual-laplacian (default) or arap: the energy of the iteration\n"
+      << "  --smooth-energy E             dual-laplacian (default), arap or dual-laplacian-and-arap:\n"
+      << "                                the energy of the iteration\n"
       << "  --long-iterations N           iteration cap of the additional runs made when the\n"
       << "                                default deform() does not converge (default 1000)\n"
       << "  --large-roi N                 ROIs with more vertices are large (default 20000)\n"
@@ -196,10 +197,12 @@ Options parse_options(int argc, char** argv)
       const std::string energy = value();
       if(energy == "arap")
         options.smooth_energy = CGAL::ARAP_ENERGY;
+      else if(energy == "dual-laplacian-and-arap")
+        options.smooth_energy = CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY;
       else if(energy == "dual-laplacian")
         options.smooth_energy = CGAL::DUAL_LAPLACIAN_ENERGY;
       else
-        throw std::invalid_argument("--smooth-energy: dual-laplacian or arap");
+        throw std::invalid_argument("--smooth-energy: dual-laplacian, arap or dual-laplacian-and-arap");
     }
     else if(argument == "--rotation-patches")
       options.rotation_patches = static_cast<std::size_t>(std::stoul(value()));
@@ -705,7 +708,10 @@ void write_report(const std::string& filename, const Options& options, const Run
       << "." << SPECTRA_MINOR_VERSION << "." << SPECTRA_PATCH_VERSION
       << "; sparse SPD solver of this package: " << sparse_solver() << "\n"
       << "- Settings: m = " << options.frequencies << ", smooth energy "
-      << (options.smooth_energy == CGAL::ARAP_ENERGY ? "ARAP" : "dual Laplacian") << ", rotation patches "
+      << (options.smooth_energy == CGAL::ARAP_ENERGY                      ? "ARAP"
+          : options.smooth_energy == CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY ? "dual Laplacian + ARAP"
+                                                                          : "dual Laplacian")
+      << ", rotation patches "
       << options.rotation_patches
       << " (0: the full iteration), additional runs `deform("
       << options.long_iterations << ", 1e-4)` (CGAL on ROIs above " << options.large_roi

@@ -60,7 +60,9 @@ inline CGAL::Spectral_smooth_energy energy_from_name(const std::string& name)
     return CGAL::DUAL_LAPLACIAN_ENERGY;
   if(name == "arap")
     return CGAL::ARAP_ENERGY;
-  throw py::value_error("energy must be 'dual_laplacian' or 'arap', not '" + name + "'");
+  if(name == "dual_laplacian_and_arap")
+    return CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY;
+  throw py::value_error("energy must be 'dual_laplacian', 'arap' or 'dual_laplacian_and_arap', not '" + name + "'");
 }
 
 inline py::dict to_dict(const CGAL::Spectral_preprocess_report& r)

@@ -100,8 +100,8 @@ policy: 'exact' (handles land exactly on their targets) or 'soft'.
 algorithm: 'spectral' (default), 'linear' or 'spatial'. constraint_weight:
 weight of the handles in the reduced system (None: the library's default, 1).
 energy: what the spectral iteration minimizes, 'dual_laplacian' (default, the
-paper's) or 'arap' (the ARAP energy of the smooth mesh: twisted tubes keep
-their section).
+paper's), 'arap' (the ARAP energy of the smooth mesh: twisted tubes keep
+their section) or 'dual_laplacian_and_arap' (their sum).
 rotation_patches: rotation patches of the iteration (None: the library's
 default; 0: one rotation per dual vertex, the full iteration).
 basis_cache: a file to read the basis from, or to write it to once computed.

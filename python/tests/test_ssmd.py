@@ -95,7 +95,11 @@ def test_arap_energy(tube_mesh):
     arap = run("arap")
     diagonal = np.linalg.norm(V.max(axis=0) - V.min(axis=0))
     assert np.max(np.abs(run("arap", 10**9) - arap)) <= 1e-9 * diagonal
-    assert np.max(np.linalg.norm(run("dual_laplacian") - arap, axis=1)) > 1e-4 * diagonal
+    dual = run("dual_laplacian")
+    assert np.max(np.linalg.norm(dual - arap, axis=1)) > 1e-4 * diagonal
+    both = run("dual_laplacian_and_arap")
+    assert np.max(np.linalg.norm(both - arap, axis=1)) > 1e-4 * diagonal
+    assert np.max(np.linalg.norm(both - dual, axis=1)) > 1e-4 * diagonal
     expect_value_error("energy", lambda: ssmd.Deformation(V, F, fixed=fixed, handles=handles, energy="elastic"))
 
 

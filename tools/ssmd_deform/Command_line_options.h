@@ -30,7 +30,7 @@ public:
 
 enum class Algorithm { SPECTRAL, LINEAR, SPATIAL };
 enum class Policy { EXACT, SOFT };
-enum class Energy { DUAL_LAPLACIAN, ARAP };
+enum class Energy { DUAL_LAPLACIAN, ARAP, DUAL_LAPLACIAN_AND_ARAP };
 
 struct Command_line_options
 {
@@ -292,11 +292,12 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
       }));
   app.add_option("--energy", energy,
                  "what the spectral iteration minimizes: dual-laplacian (default, the paper's dual "
-                 "Laplacian editing) or arap (the as-rigid-as-possible energy of the smooth mesh: "
-                 "twisted tubes keep their section).")
+                 "Laplacian editing), arap (the as-rigid-as-possible energy of the smooth mesh: "
+                 "twisted tubes keep their section) or dual-laplacian-and-arap (their sum).")
       ->option_text("NAME")
-      ->check(internal::expects("--energy", "dual-laplacian or arap", [](const std::string& v) {
-        return v == "dual-laplacian" || v == "arap";
+      ->check(internal::expects("--energy", "dual-laplacian, arap or dual-laplacian-and-arap",
+                                [](const std::string& v) {
+        return v == "dual-laplacian" || v == "arap" || v == "dual-laplacian-and-arap";
       }));
   app.add_option("--iterations", options.iterations,
                  "maximal number of solves of the iteration (default 10, at least 1).")
@@ -389,7 +390,9 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
                       : algorithm == "spatial" ? Algorithm::SPATIAL
                                                : Algorithm::SPECTRAL;
   options.policy = policy == "soft" ? Policy::SOFT : Policy::EXACT;
-  options.energy = energy == "arap" ? Energy::ARAP : Energy::DUAL_LAPLACIAN;
+  options.energy = energy == "arap"                      ? Energy::ARAP
+                   : energy == "dual-laplacian-and-arap" ? Energy::DUAL_LAPLACIAN_AND_ARAP
+                                                         : Energy::DUAL_LAPLACIAN;
   options.use_cache = !no_cache;
 
   if(files.size() == 2)

@@ -58,6 +58,10 @@ enum Spectral_constraint_policy {
   SOFT_CONSTRAINTS
 };
 
+/// \ingroup PkgSpectralSurfaceMeshDeformationRef
+/// The energy of the smooth mesh that the iteration of the spectral
+/// algorithm minimizes in the space of the basis, with the constraints
+/// (`Spectral_parameters::set_smooth_energy()`).
 enum Spectral_smooth_energy {
   /// The paper's (the default): dual Laplacian editing. Each iteration turns
   /// the dual Laplacian coordinates of the smooth rest mesh to the normals
@@ -71,7 +75,13 @@ enum Spectral_smooth_energy {
   /// editing, the rotations turn the edges about the surface's normal too, so
   /// twisted tubes keep their section; bends of open sheets spread less
   /// evenly within ten iterations.
-  ARAP_ENERGY
+  ARAP_ENERGY,
+  /// The sum of the two, the ARAP energy scaled so that the matrices of the
+  /// two reduced systems have the same trace: twisted tubes keep their
+  /// section as with `ARAP_ENERGY`, and twists and bends spread along the
+  /// shape almost as with `DUAL_LAPLACIAN_ENERGY`. Each iteration does the
+  /// work of both.
+  DUAL_LAPLACIAN_AND_ARAP_ENERGY
 };
 
 } // namespace CGAL

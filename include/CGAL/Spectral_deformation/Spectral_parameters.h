@@ -129,10 +129,10 @@ public:
   /// The energy the iteration of `deform()` minimizes in the space of the
   /// basis (default `DUAL_LAPLACIAN_ENERGY`, the paper's).
   Spectral_smooth_energy smooth_energy() const { return m_computation.settings().smooth_energy; }
-  /// Sets the energy the iteration minimizes. `ARAP_ENERGY` keeps twisted
-  /// tubes round where dual Laplacian editing pinches them (see the
-  /// manual's section on the choice of the energy); it works with rotation
-  /// patches too. A change recomputes the reduced matrices, not the basis,
+  /// Sets the energy the iteration minimizes. `ARAP_ENERGY` and
+  /// `DUAL_LAPLACIAN_AND_ARAP_ENERGY` keep twisted tubes round where dual
+  /// Laplacian editing pinches them (see the manual's section on the energy
+  /// of the iteration); they work with rotation patches too. A change recomputes the reduced matrices, not the basis,
   /// and the next `deform()` starts from the rest shape; it is a change of
   /// the constraint set. `SPECTRAL_LINEAR` does not iterate and ignores it.
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `energy`
@@ -140,7 +140,7 @@ public:
   void set_smooth_energy(Spectral_smooth_energy energy)
   {
     static_assert(is_spectral, "set_smooth_energy(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    if(energy != DUAL_LAPLACIAN_ENERGY && energy != ARAP_ENERGY)
+    if(energy != DUAL_LAPLACIAN_ENERGY && energy != ARAP_ENERGY && energy != DUAL_LAPLACIAN_AND_ARAP_ENERGY)
       throw Error(Error::INVALID_ARGUMENT, "unknown smooth energy");
     m_computation.set_smooth_energy(energy);
   }

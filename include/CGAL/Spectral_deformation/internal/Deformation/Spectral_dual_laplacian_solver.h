@@ -50,6 +50,8 @@ using Mesh::Triangle_arrays;
 /// side of the global step of as-rigid-as-possible deformation with the
 /// rotations of the one-rings of the current smooth shape
 /// (`Rotated_edges`). At rest b = Q S₀, so the residual at rest is zero too.
+/// `DUAL_LAPLACIAN_AND_ARAP_ENERGY` adds the two systems, the ARAP one
+/// scaled so that both matrices have the same trace.
 class Spectral_dual_laplacian_solver
 {
 public:
@@ -67,17 +69,8 @@ public:
     m_dual = Dual_mesh_operator(rest.triangles, rest.number_of_vertices());
     m_rest_coefficients = basis.transpose() * (mass.asDiagonal() * rest.positions);
     m_smooth_rest = basis * m_rest_coefficients;
-    if(m_energy == ARAP_ENERGY)
+    if(uses_dual_energy())
     {
-      m_rest_coordinates = Dual_coordinates();
-      m_negative_heights.resize(0);
-      const Eigen::SparseMatrix<double> Q = cotangent_stiffness(rest);
-      m_rotated_edges.initialize(Q, m_smooth_rest, m_smooth_rest);
-      m_G0 = basis.transpose() * (Q * basis);
-    }
-    else
-    {
-      m_rotated_edges = Rotated_edges();
       m_rest_coordinates = m_dual.evaluate(m_smooth_rest);
       m_negative_heights = -m_rest_coordinates.heights;
       const Eigen::SparseMatrix<double> LF = m_dual.laplacian_operator(m_rest_coordinates.weights);
@@ -85,6 +78,26 @@ public:
       // Never form the dense rows×m matrix L̂F H: (LᵀL) H is n×m like H.
       m_G0 = basis.transpose() * (normal * basis);
     }
+    else
+    {
+      m_rest_coordinates = Dual_coordinates();
+      m_negative_heights.resize(0);
+      m_G0.setZero(basis.cols(), basis.cols());
+    }
+    m_arap_scale = 1;
+    if(uses_arap_energy())
+    {
+      const Eigen::SparseMatrix<double> Q = cotangent_stiffness(rest);
+      m_rotated_edges.initialize(Q, m_smooth_rest, m_smooth_rest);
+      const Eigen::MatrixXd arap = basis.transpose() * (Q * basis);
+      // The sum weighs the two energies alike: its two matrices get the same
+      // trace (their ratio depends on the resolution of the mesh).
+      if(uses_dual_energy() && arap.trace() > 0)
+        m_arap_scale = m_G0.trace() / arap.trace();
+      m_G0 += m_arap_scale * arap;
+    }
+    else
+      m_rotated_edges = Rotated_edges();
     m_G0 = 0.5 * (m_G0 + m_G0.transpose()).eval();
     m_scale = std::sqrt(mass.sum()) *
               (rest.positions.colwise().maxCoeff() - rest.positions.colwise().minCoeff()).norm();
@@ -205,30 +218,31 @@ public:
     }
     Workspace& w = m_workspace;
     multiply(current, w.shape);
-    if(m_energy == ARAP_ENERGY)
+    if(uses_dual_energy())
+      w.normals = m_rest_coordinates.normals;
+    for(int iteration = 0; iteration <= max_iterations; ++iteration)
     {
-      for(int iteration = 0; iteration <= max_iterations; ++iteration)
+      if(uses_dual_energy())
+      {
+        // The rest coordinates turned to the dual normals of the current
+        // shape, l̂ = -h n̂, brought back to the reduced space: Hᵀ (L̂F)ᵀ l̂.
+        m_dual.update_normals(w.shape, w.centroids, w.normals);
+        m_dual.apply_transpose(m_rest_coordinates.weights, m_negative_heights, w.normals, w.faces,
+                               w.vertices);
+        multiply_transpose(w.vertices, w.rhs);
+      }
+      if(uses_arap_energy())
       {
         // The rest edges of the smooth mesh turned by the rotations of its
         // current one-rings, brought back to the reduced space: Hᵀ b(R).
-        multiply_transpose(m_rotated_edges.evaluate(w.shape), w.rhs);
-        if(take_step(w.rhs, constraint_rhs, current, iteration, tolerance, report))
-          break;
-        if(iteration < max_iterations)
-          multiply(current, w.shape);
+        if(uses_dual_energy())
+        {
+          multiply_transpose(m_rotated_edges.evaluate(w.shape), w.arap_rhs);
+          w.rhs += m_arap_scale * w.arap_rhs;
+        }
+        else
+          multiply_transpose(m_rotated_edges.evaluate(w.shape), w.rhs);
       }
-      coefficients = current;
-      return report;
-    }
-    w.normals = m_rest_coordinates.normals;
-    for(int iteration = 0; iteration <= max_iterations; ++iteration)
-    {
-      // The rest coordinates turned to the dual normals of the current shape,
-      // l̂ = -h n̂, brought back to the reduced space: Hᵀ (L̂F)ᵀ l̂.
-      m_dual.update_normals(w.shape, w.centroids, w.normals);
-      m_dual.apply_transpose(m_rest_coordinates.weights, m_negative_heights, w.normals, w.faces,
-                             w.vertices);
-      multiply_transpose(w.vertices, w.rhs);
       if(take_step(w.rhs, constraint_rhs, current, iteration, tolerance, report))
         break;
       if(iteration < max_iterations)
@@ -250,20 +264,19 @@ public:
 private:
   void build_patches()
   {
+    m_patches = Clustered_rotation_rhs();
+    m_arap_patches = Clustered_rotation_rhs();
     if(m_patch_count == 0)
-    {
-      m_patches = Clustered_rotation_rhs();
       return;
-    }
-    if(m_energy == ARAP_ENERGY)
+    if(uses_arap_energy())
     {
       const std::vector<int> patch_of_vertex =
           cluster_vertices(m_dual, m_dual.centroids(m_smooth_rest), m_smooth_rest.rows(), m_patch_count);
-      m_patches = Clustered_rotation_rhs();
-      m_patches.initialize_arap(*m_basis, m_rotated_edges.rotation_field().adjacency(), m_smooth_rest,
-                                patch_of_vertex);
-      return;
+      m_arap_patches.initialize_arap(*m_basis, m_rotated_edges.rotation_field().adjacency(), m_smooth_rest,
+                                     patch_of_vertex);
     }
+    if(!uses_dual_energy())
+      return;
     const std::vector<int> patch_of_row =
         cluster_dual_rows(m_dual, m_dual.centroids(m_smooth_rest), m_patch_count);
     m_patches.initialize(*m_basis, m_dual, m_rest_coordinates.weights, m_rest_coordinates.coordinates,
@@ -275,10 +288,20 @@ private:
   void iterate_with_patches(const Eigen::MatrixXd& constraint_rhs, Eigen::MatrixXd& current,
                             int max_iterations, double tolerance, Iteration_report& report) const
   {
-    Eigen::MatrixXd rhs;
+    Eigen::MatrixXd rhs, arap_rhs;
     for(int iteration = 0; iteration <= max_iterations; ++iteration)
     {
-      m_patches.evaluate(current, rhs);
+      if(!uses_dual_energy())
+        m_arap_patches.evaluate(current, rhs);
+      else
+      {
+        m_patches.evaluate(current, rhs);
+        if(uses_arap_energy())
+        {
+          m_arap_patches.evaluate(current, arap_rhs);
+          rhs += m_arap_scale * arap_rhs;
+        }
+      }
       if(take_step(rhs, constraint_rhs, current, iteration, tolerance, report))
         break;
     }
@@ -336,8 +359,11 @@ private:
   struct Workspace
   {
     Positions shape, centroids, normals, faces, vertices;
-    Eigen::MatrixXd rhs;
+    Eigen::MatrixXd rhs, arap_rhs;
   };
+
+  bool uses_dual_energy() const { return m_energy != ARAP_ENERGY; }
+  bool uses_arap_energy() const { return m_energy != DUAL_LAPLACIAN_ENERGY; }
 
   const Eigen::MatrixXd* m_basis = nullptr;
   Basis_panels<double> m_panels;
@@ -349,8 +375,9 @@ private:
   Eigen::MatrixXd m_rest_coefficients;
   Positions m_smooth_rest;
   Spectral_smooth_energy m_energy = DUAL_LAPLACIAN_ENERGY;
-  Rotated_edges m_rotated_edges; // ARAP_ENERGY
-  Dual_coordinates m_rest_coordinates; // DUAL_LAPLACIAN_ENERGY
+  Rotated_edges m_rotated_edges;       // the ARAP energy
+  double m_arap_scale = 1;             // its weight in the sum
+  Dual_coordinates m_rest_coordinates; // the dual Laplacian energy
   Eigen::VectorXd m_negative_heights;
   Eigen::MatrixXd m_G0;
   double m_scale = 1;
@@ -363,7 +390,7 @@ private:
   bool m_factored = false;
   mutable Workspace m_workspace;
   std::size_t m_patch_count = 0;
-  Clustered_rotation_rhs m_patches;
+  Clustered_rotation_rhs m_patches, m_arap_patches;
 };
 
 } // namespace Deformation
