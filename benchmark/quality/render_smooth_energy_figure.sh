@@ -4,7 +4,7 @@
 # Renders the figures of the manual's section "The energy of the iteration"
 # (doc/fig/tube_twist_energy.png, doc/fig/bar_twist_energy.png): the twisted
 # tube and the twisted bar deformed by CGAL ARAP and by the spectral iteration
-# with each smooth energy. Runs quality_report twice (about two minutes).
+# with each smooth energy. Runs quality_report three times (about five minutes).
 #
 # Usage: benchmark/quality/render_smooth_energy_figure.sh
 # Environment: SSMD_BUILD_DIR (default <repository>/build, quality_report built).
@@ -16,7 +16,7 @@ work="$(mktemp -d)"
 trap 'rm -rf "${work}"' EXIT
 python=/usr/bin/python3
 
-for energy in dual-laplacian arap; do
+for energy in dual-laplacian arap dual-laplacian-and-arap; do
   "${build_dir}/benchmark/quality/quality_report" --output "${work}/${energy}.md" \
     --meshes "${build_dir}/data/meshes" --cases "${repository}/benchmark/quality/cases" \
     --only tube_twist,bar_twist --smooth-energy "${energy}" --mesh-output "${work}/${energy}" > /dev/null
@@ -28,12 +28,13 @@ for shape in tube bar; do
   colour "${shape}_cgal" "${work}/arap" "${shape}_twist" cgal_spokes_and_rims
   colour "${shape}_dual" "${work}/dual-laplacian" "${shape}_twist" spectral_exact
   colour "${shape}_arap" "${work}/arap" "${shape}_twist" spectral_exact
+  colour "${shape}_sum" "${work}/dual-laplacian-and-arap" "${shape}_twist" spectral_exact
 done
-"${python}" "${repository}/scripts/render_meshes.py" "${figures}/tube_twist_energy.png" --size 320 \
+"${python}" "${repository}/scripts/render_meshes.py" "${figures}/tube_twist_energy.png" --size 300 \
   --up +Z --elevation 10 --scalars edge_change --range 0,0.5 \
   "CGAL ARAP=${work}/tube_cgal.vtk" "DUAL_LAPLACIAN_ENERGY=${work}/tube_dual.vtk" \
-  "ARAP_ENERGY=${work}/tube_arap.vtk"
-"${python}" "${repository}/scripts/render_meshes.py" "${figures}/bar_twist_energy.png" --size 320 \
+  "ARAP_ENERGY=${work}/tube_arap.vtk" "DUAL_LAPLACIAN_AND_ARAP_ENERGY=${work}/tube_sum.vtk"
+"${python}" "${repository}/scripts/render_meshes.py" "${figures}/bar_twist_energy.png" --size 300 \
   --up +Z --elevation 10 --scalars edge_change --range 0,0.5 \
   "CGAL ARAP=${work}/bar_cgal.vtk" "DUAL_LAPLACIAN_ENERGY=${work}/bar_dual.vtk" \
-  "ARAP_ENERGY=${work}/bar_arap.vtk"
+  "ARAP_ENERGY=${work}/bar_arap.vtk" "DUAL_LAPLACIAN_AND_ARAP_ENERGY=${work}/bar_sum.vtk"
