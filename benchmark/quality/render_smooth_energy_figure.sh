@@ -32,9 +32,9 @@ for shape in tube bar; do
 done
 "${python}" "${repository}/scripts/render_meshes.py" "${figures}/tube_twist_energy.png" --size 300 \
   --up +Z --elevation 10 --scalars edge_change --range 0,0.5 \
-  "CGAL ARAP=${work}/tube_cgal.vtk" "DUAL_LAPLACIAN_ENERGY=${work}/tube_dual.vtk" \
-  "ARAP_ENERGY=${work}/tube_arap.vtk" "DUAL_LAPLACIAN_AND_ARAP_ENERGY=${work}/tube_sum.vtk"
+  "CGAL ARAP=${work}/tube_cgal.vtk" "dual Laplacian (default)=${work}/tube_dual.vtk" \
+  "ARAP energy=${work}/tube_arap.vtk" "sum of the two=${work}/tube_sum.vtk"
 "${python}" "${repository}/scripts/render_meshes.py" "${figures}/bar_twist_energy.png" --size 300 \
   --up +Z --elevation 10 --scalars edge_change --range 0,0.5 \
-  "CGAL ARAP=${work}/bar_cgal.vtk" "DUAL_LAPLACIAN_ENERGY=${work}/bar_dual.vtk" \
-  "ARAP_ENERGY=${work}/bar_arap.vtk" "DUAL_LAPLACIAN_AND_ARAP_ENERGY=${work}/bar_sum.vtk"
+  "CGAL ARAP=${work}/bar_cgal.vtk" "dual Laplacian (default)=${work}/bar_dual.vtk" \
+  "ARAP energy=${work}/bar_arap.vtk" "sum of the two=${work}/bar_sum.vtk"
