@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -66,9 +67,17 @@ public:
   /// not finite.
   void initialize(const Triangle_arrays& detailed, const Positions& smooth_rest)
   {
+    initialize(detailed, smooth_rest, cotangent_stiffness(detailed));
+  }
+
+  /// As above, with `stiffness` the cotangent stiffness of `detailed`
+  /// (`cotangent_stiffness()`), already computed by the caller.
+  void initialize(const Triangle_arrays& detailed, const Positions& smooth_rest,
+                  Eigen::SparseMatrix<double> stiffness)
+  {
     typedef Spectral_deformation_error Error;
     m_rest = detailed.positions;
-    m_stiffness = cotangent_stiffness(detailed);
+    m_stiffness = std::move(stiffness);
     if(!smooth_rest.allFinite())
       throw Error(Error::SOLVER_FAILURE, "the smooth mesh has non-finite coordinates");
     m_rotated_edges.initialize(m_stiffness, m_rest, smooth_rest);

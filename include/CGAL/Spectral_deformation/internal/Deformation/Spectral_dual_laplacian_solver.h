@@ -62,6 +62,21 @@ public:
   void initialize(const Eigen::MatrixXd& basis, const Eigen::VectorXd& mass,
                   const Triangle_arrays& rest)
   {
+    initialize(basis, mass, rest, nullptr);
+  }
+
+  /// As above, with `stiffness` the cotangent stiffness of `rest`
+  /// (`cotangent_stiffness()`), already computed by the caller.
+  void initialize(const Eigen::MatrixXd& basis, const Eigen::VectorXd& mass, const Triangle_arrays& rest,
+                  const Eigen::SparseMatrix<double>& stiffness)
+  {
+    initialize(basis, mass, rest, &stiffness);
+  }
+
+private:
+  void initialize(const Eigen::MatrixXd& basis, const Eigen::VectorXd& mass, const Triangle_arrays& rest,
+                  const Eigen::SparseMatrix<double>* stiffness)
+  {
     m_basis = &basis;
     // The iteration reads its own copy of the basis, laid out for it.
     assign_panels();
@@ -87,7 +102,13 @@ public:
     m_arap_scale = 1;
     if(uses_arap_energy())
     {
-      const Eigen::SparseMatrix<double> Q = cotangent_stiffness(rest);
+      Eigen::SparseMatrix<double> computed;
+      if(stiffness == nullptr)
+      {
+        computed = cotangent_stiffness(rest);
+        stiffness = &computed;
+      }
+      const Eigen::SparseMatrix<double>& Q = *stiffness;
       m_rotated_edges.initialize(Q, m_smooth_rest, m_smooth_rest);
       const Eigen::MatrixXd arap = basis.transpose() * (Q * basis);
       // The sum weighs the two energies alike: its two matrices get the same
@@ -104,6 +125,8 @@ public:
     m_factored = false;
     build_patches();
   }
+
+public:
 
   /// The energy the iteration minimizes (default `DUAL_LAPLACIAN_ENERGY`).
   Spectral_smooth_energy smooth_energy() const { return m_energy; }

@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -85,9 +86,11 @@ public:
     // Without iterations there are no rotations to fit: the linear
     // algorithm keeps the paper's system.
     m_solver.set_smooth_energy(Iterated ? settings.smooth_energy : DUAL_LAPLACIAN_ENERGY);
-    m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays);
+    // The stiffness of the region, for the ARAP energy and the detail transfer.
+    Eigen::SparseMatrix<double> stiffness = cotangent_stiffness(region.arrays);
+    m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays, stiffness);
     m_detail.set_process_wide_tuning(process_wide_tuning_of(eigensolver));
-    m_detail.initialize(region.arrays, m_solver.smooth_rest());
+    m_detail.initialize(region.arrays, m_solver.smooth_rest(), std::move(stiffness));
     m_has_solution = false;
   }
 
@@ -168,7 +171,7 @@ public:
     if(!Iterated || energy == m_solver.smooth_energy())
       return;
     m_solver.set_smooth_energy(energy);
-    m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays);
+    m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays, m_detail.stiffness());
     m_has_solution = false;
   }
   const Basis_data& basis() const { return m_basis; }
