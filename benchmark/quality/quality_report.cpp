@@ -27,6 +27,7 @@
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/IO/deformation_selection.h>
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_deformation/Partition_of_unity_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
 #include <CGAL/Surface_mesh_deformation.h>
@@ -59,6 +60,7 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -100,6 +102,8 @@ struct Options
   std::size_t frequencies = 100;
   std::size_t rotation_patches = 0;          // of the spectral algorithms; 0: the full iteration
   CGAL::Spectral_smooth_energy smooth_energy = CGAL::DUAL_LAPLACIAN_ENERGY; // of the iteration
+  bool partition_of_unity_basis = false; // the approximate basis instead of the exact one
+  Eigen::Index basis_samples = 0;         // of the approximate basis; 0: its default
   unsigned int long_iterations = 1000;      // of the additional runs
   unsigned int arap_large_iterations = 200; // of the additional CGAL runs on large ROIs
   std::size_t large_roi = 20000;
@@ -124,6 +128,9 @@ void print_usage(const char* program)
       << "  --only a,b,...                run only the cases of these names\n"
       << "  --frequencies m               basis size of the spectral algorithms (default 100)\n"
       << "  --rotation-patches k          rotation patches of the iteration (default 0: full)\n"
+      << "  --basis B                     exact (default: Block_lanczos_eigensolver_traits) or\n"
+      << "                                partition-of-unity (Partition_of_unity_eigensolver_traits)\n"
+      << "  --basis-samples k             samples of the partition-of-unity basis (default: its own)\n"
       << "  --smooth-energy E             dual-laplacian (default), arap or dual-laplacian-and-arap:\n"
       << "                                the energy of the iteration\n"
       << "  --long-iterations N           iteration cap of the additional runs made when the\n"
@@ -204,6 +211,18 @@ Options parse_options(int argc, char** argv)
       else
         throw std::invalid_argument("--smooth-energy: dual-laplacian, arap or dual-laplacian-and-arap");
     }
+    else if(argument == "--basis")
+    {
+      const std::string basis = value();
+      if(basis == "partition-of-unity")
+        options.partition_of_unity_basis = true;
+      else if(basis == "exact")
+        options.partition_of_unity_basis = false;
+      else
+        throw std::invalid_argument("--basis: exact or partition-of-unity");
+    }
+    else if(argument == "--basis-samples")
+      options.basis_samples = to_positive_int(value(), argument);
     else if(argument == "--rotation-patches")
       options.rotation_patches = static_cast<std::size_t>(std::stoul(value()));
     else if(argument == "--long-iterations")
@@ -358,9 +377,11 @@ Cgal_iterations run_cgal(const Deformation_case& c, unsigned int iterations, Run
   return run;
 }
 
-template <CGAL::Spectral_deformation_algorithm_tag TAG>
+template <CGAL::Spectral_deformation_algorithm_tag TAG, class ET = CGAL::Default>
 using Spectral_deformation =
-    CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, TAG>;
+    CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, TAG, ET>;
+
+typedef CGAL::Partition_of_unity_eigensolver_traits<> Partition_of_unity_traits;
 
 
 // ----------------------------------------------------------------------------
@@ -396,16 +417,16 @@ void record_deformation(const Deformation& deformation, bool linear, double seco
 /// Runs `deform()` with the defaults of the class and, when it stops at its
 /// iteration cap, `deform(long_iterations, tolerance)` after `reset()` (same
 /// region, basis and factorizations).
-template <CGAL::Spectral_deformation_algorithm_tag TAG>
+template <CGAL::Spectral_deformation_algorithm_tag TAG, class ET = CGAL::Default>
 void run_package_algorithm(const Deformation_case& c, const Options& options,
                            CGAL::Spectral_constraint_policy policy, const std::string& label,
                            const std::string& key, std::vector<Run_result>& results)
 {
   const bool linear = (TAG == CGAL::SPECTRAL_LINEAR);
   Mesh mesh = c.mesh;
-  Spectral_deformation<TAG> deformation(mesh);
+  Spectral_deformation<TAG, ET> deformation(mesh);
   select_vertices(deformation, c);
-  if constexpr(Spectral_deformation<TAG>::has_basis)
+  if constexpr(Spectral_deformation<TAG, ET>::has_basis)
   {
     deformation.set_number_of_frequencies(options.frequencies);
     deformation.set_rotation_patches(options.rotation_patches);
@@ -413,8 +434,11 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
     deformation.set_constraint_policy(policy);
     // This program owns its process: the solvers may change process-wide
     // state (OpenBLAS threads, SuiteSparse's allocator) to run faster.
-    typename Spectral_deformation<TAG>::Eigensolver_traits eigensolver;
-    eigensolver.set_process_wide_tuning(true);
+    typename Spectral_deformation<TAG, ET>::Eigensolver_traits eigensolver;
+    if constexpr(std::is_same_v<ET, Partition_of_unity_traits>)
+      eigensolver.set_number_of_samples(options.basis_samples);
+    else
+      eigensolver.set_process_wide_tuning(true);
     deformation.set_eigensolver_traits(eigensolver);
   }
 
@@ -711,6 +735,13 @@ void write_report(const std::string& filename, const Options& options, const Run
       << (options.smooth_energy == CGAL::ARAP_ENERGY                      ? "ARAP"
           : options.smooth_energy == CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY ? "dual Laplacian + ARAP"
                                                                           : "dual Laplacian")
+      << ", basis "
+      << (options.partition_of_unity_basis
+              ? "partition of unity (" +
+                    (options.basis_samples > 0 ? std::to_string(options.basis_samples)
+                                               : std::string("default number of")) +
+                    " samples)"
+              : std::string("exact"))
       << ", rotation patches "
       << options.rotation_patches
       << " (0: the full iteration), additional runs `deform("
@@ -851,14 +882,24 @@ void run_case(const Deformation_case& c, const Options& options, unsigned int le
     progress(step);
   }
   step = Clock::now();
-  run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
-      c, spectral_options, CGAL::EXACT_CONSTRAINTS, "spectral dual Laplacian, exact, " + m,
-      "spectral_exact", results);
+  if(options.partition_of_unity_basis)
+    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN, Partition_of_unity_traits>(
+        c, spectral_options, CGAL::EXACT_CONSTRAINTS, "spectral dual Laplacian, exact, " + m,
+        "spectral_exact", results);
+  else
+    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
+        c, spectral_options, CGAL::EXACT_CONSTRAINTS, "spectral dual Laplacian, exact, " + m,
+        "spectral_exact", results);
   progress(step);
   step = Clock::now();
-  run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
-      c, spectral_options, CGAL::SOFT_CONSTRAINTS, "spectral dual Laplacian, soft, " + m,
-      "spectral_soft", results);
+  if(options.partition_of_unity_basis)
+    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN, Partition_of_unity_traits>(
+        c, spectral_options, CGAL::SOFT_CONSTRAINTS, "spectral dual Laplacian, soft, " + m,
+        "spectral_soft", results);
+  else
+    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
+        c, spectral_options, CGAL::SOFT_CONSTRAINTS, "spectral dual Laplacian, soft, " + m,
+        "spectral_soft", results);
   progress(step);
   if(!sweep_only)
   {

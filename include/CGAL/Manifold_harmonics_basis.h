@@ -23,6 +23,8 @@
 #include <istream>
 #include <ostream>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Spectral_deformation {
@@ -44,6 +46,18 @@ inline void normalize_signs(Eigen::MatrixXd& eigenvectors)
   }
 }
 
+/// Whether eigensolver traits take the vertex positions before `compute()`
+/// (`set_vertex_positions()`, an optional member of the concept).
+template <class Traits, class = void>
+struct Takes_vertex_positions : std::false_type
+{};
+
+template <class Traits>
+struct Takes_vertex_positions<
+    Traits, std::void_t<decltype(std::declval<Traits&>().set_vertex_positions(
+                std::declval<const Mesh::Positions&>()))>> : std::true_type
+{};
+
 /// The m smallest generalized eigenpairs of the cotangent stiffness against
 /// the lumped mass of `mesh` (validated arrays). The stiffness matrix is
 /// assembled in huge pages when the eigensolver was asked for process-wide
@@ -62,6 +76,8 @@ void compute_manifold_harmonics(const Triangle_arrays& mesh, Eigen::Index m,
   const Eigen::SparseMatrix<double> stiffness =
       cotangent_stiffness(mesh, process_wide_tuning_of(eigensolver));
   mass = lumped_mass(mesh);
+  if constexpr(Takes_vertex_positions<EigensolverTraits>::value)
+    eigensolver.set_vertex_positions(mesh.positions);
   if(!eigensolver.compute(stiffness, mass, m, eigenvalues, eigenvectors))
     throw Error(Error::SOLVER_FAILURE,
                 "the manifold harmonics eigensolver failed: " + eigensolver.error_message());

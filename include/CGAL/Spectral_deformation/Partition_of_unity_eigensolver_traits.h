@@ -1,0 +1,195 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_PARTITION_OF_UNITY_EIGENSOLVER_TRAITS_H
+#define CGAL_SPECTRAL_DEFORMATION_PARTITION_OF_UNITY_EIGENSOLVER_TRAITS_H
+
+#include <CGAL/Spectral_deformation/Block_lanczos_eigensolver_traits.h>
+#include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Farthest_point_sampling.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Partition_of_unity_space.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+/// \ingroup PkgSpectralSurfaceMeshDeformationTraits
+/// A model of `ManifoldHarmonicsEigensolverTraits` that approximates the
+/// basis in a space of smooth, locally supported functions whose size does
+/// not depend on the mesh (after Nasikun, Brandt and Hildebrandt, *Fast
+/// Approximation of Laplace-Beltrami Eigenproblems*, SGP 2018). It is
+/// several times cheaper than the exact solvers on large meshes, and its cost
+/// grows about linearly with the number of vertices.
+///
+/// The space is built from `number_of_samples()` vertices spread evenly over
+/// the mesh by farthest point sampling. Each sample carries a smooth bump of
+/// the distance to it (measured along the edges), whose radius is
+/// `support_factor()` times the largest distance of a vertex to its nearest
+/// sample; the bumps divided by their sum form a partition of unity, so the
+/// constant functions, the eigenvectors of 0, are in the space exactly.
+/// Each function is also multiplied by the two coordinates of the plane
+/// that fits its support (`set_linear_functions()`, on by default), three
+/// functions per sample. The eigenpairs of the cotangent Laplacian
+/// restricted to this space (a Rayleigh-Ritz projection: `Pᵀ Q P` against
+/// `Pᵀ M P`) are computed with Spectra's shift-invert Lanczos, and the
+/// basis is `H = P Y`.
+///
+/// What the approximation gives:
+/// - the basis is M-orthonormal (`Hᵀ M H = I`) like the exact one, and every
+///   eigenvalue is an upper bound of the exact one (Rayleigh-Ritz);
+/// - the functions of the basis are smooth, and the higher frequencies of
+///   the basis are approximated less well than the lower ones. A deformation
+///   uses the basis only for the smooth mesh, whose detail the deformation
+///   transfer adds back, so what matters is the deformation it gives, not
+///   the eigenvalues; the user manual compares both.
+///
+/// Meshes that are small against the space (fewer than
+/// `exact_threshold()` vertices per sampled function) are solved exactly by
+/// `Block_lanczos_eigensolver_traits`, which is then as cheap.
+///
+/// The traits needs the vertex positions, which
+/// `CGAL::Manifold_harmonics_basis` and the deformation class hand it through
+/// `set_vertex_positions()` before `compute()`.
+///
+/// \tparam SparseSPDSolverTraits a model of `SparseSPDSolverTraits`, used to
+///         factor the reduced shifted matrix (and by the exact solver on
+///         small meshes).
+template <class SparseSPDSolverTraits = Default_eigensolver_sparse_spd_solver_traits>
+class Partition_of_unity_eigensolver_traits
+{
+public:
+  /// Positions of the vertices, one row per vertex.
+  typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Positions;
+
+  /// The number of sampled vertices `k` for `m` frequencies: the value set by
+  /// `set_number_of_samples()`, or, by default (0), `10 m` and at least 200.
+  Eigen::Index number_of_samples(Eigen::Index m) const
+  {
+    return m_samples > 0 ? m_samples : (std::max<Eigen::Index>)(10 * m, 200);
+  }
+  /// Sets the number of sampled vertices; 0 (the default) means `10 m`, at least 200.
+  void set_number_of_samples(Eigen::Index samples) { m_samples = (std::max<Eigen::Index>)(samples, 0); }
+
+  /// The radius of each bump over the largest distance of a vertex to its
+  /// nearest sample (default 2: each vertex lies under about ten bumps).
+  double support_factor() const { return m_support_factor; }
+  /// Sets the support factor; values below 1 would leave vertices under no
+  /// bump, and `compute()` then fails.
+  void set_support_factor(double factor) { m_support_factor = factor; }
+
+  /// Whether each bump is also multiplied by the two coordinates of its
+  /// tangent plane (default `true`).
+  bool linear_functions() const { return m_linear; }
+  /// Sets whether the linear functions are used.
+  void set_linear_functions(bool linear) { m_linear = linear; }
+
+  /// The number of vertices per function of the space below which
+  /// `compute()` solves exactly (default 8).
+  double exact_threshold() const { return m_exact_threshold; }
+  /// Sets the exact threshold.
+  void set_exact_threshold(double vertices_per_function) { m_exact_threshold = vertices_per_function; }
+
+  /// Sets the positions of the vertices of the next `compute()`: rows in the
+  /// order of the rows of its stiffness matrix.
+  void set_vertex_positions(const Positions& positions) { m_positions = positions; }
+
+  /// Computes an approximation of the `m` smallest eigenpairs of
+  /// `Q h = lambda M h` with `M = diag(mass)`: `eigenvalues` ascending,
+  /// `eigenvectors` (n×m) M-orthonormal. Returns `false`, with
+  /// `error_message()` set, when no positions of the right size were set,
+  /// when the space is too small for `m` functions (more samples are needed),
+  /// or when the reduced eigenproblem fails.
+  bool compute(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
+               Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors)
+  {
+    namespace E = Spectral_deformation::internal::Eigensolvers;
+    m_error_message.clear();
+    const Eigen::Index n = stiffness.rows();
+    if(m < 1 || m > n)
+      return fail("the number of eigenpairs must be between 1 and the number of vertices");
+    const Eigen::Index samples = number_of_samples(m);
+    const double functions = static_cast<double>(samples * (m_linear ? 3 : 1));
+    if(static_cast<double>(n) < m_exact_threshold * functions)
+    {
+      Block_lanczos_eigensolver_traits<SparseSPDSolverTraits> exact;
+      if(exact.compute(stiffness, mass, m, eigenvalues, eigenvectors))
+        return true;
+      return fail(exact.error_message());
+    }
+    if(m_positions.rows() != n)
+      return fail("the vertex positions were not set (set_vertex_positions()) or do not match "
+                  "the stiffness matrix");
+    if(!(m_support_factor >= 1.0))
+      return fail("the support factor must be at least 1");
+    try
+    {
+#ifdef SSMD_PU_TIMING
+      auto clock = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
+      double t0 = clock();
+#define SSMD_PU_T(what) { double t = clock(); std::cerr << what << " " << t - t0 << "\n"; t0 = t; }
+#else
+#define SSMD_PU_T(what)
+#endif
+      const E::Edge_length_graph graph = E::edge_length_graph(stiffness, m_positions);
+      double covering_radius = 0.0;
+      const std::vector<Eigen::Index> sampled =
+          E::farthest_point_samples(graph, samples, covering_radius);
+      SSMD_PU_T("graph+fps")
+      if(!(covering_radius < std::numeric_limits<double>::infinity()))
+        return fail("the mesh has more connected components than samples");
+      if(!(covering_radius > 0.0))
+        return fail("every vertex is a sample: the mesh is too small for the sampled space");
+      const Eigen::SparseMatrix<double> space = E::partition_of_unity_functions(
+          graph, m_positions, sampled, m_support_factor * covering_radius, m_linear);
+      SSMD_PU_T("functions")
+      std::string message;
+      if(!E::reduced_eigenpairs<SparseSPDSolverTraits>(stiffness, mass, space, m, eigenvalues,
+                                                       eigenvectors, message))
+        return fail(message);
+      SSMD_PU_T("reduced")
+    }
+    catch(const std::bad_alloc&)
+    {
+      return fail("out of memory while building the space of sampled functions");
+    }
+    catch(const std::exception& e)
+    {
+      return fail(e.what());
+    }
+    if(!eigenvalues.allFinite() || !eigenvectors.allFinite())
+      return fail("the reduced eigenproblem gave non-finite values");
+    return true;
+  }
+
+  /// The reason of the last failure of `compute()`.
+  const std::string& error_message() const { return m_error_message; }
+
+private:
+  bool fail(const std::string& message)
+  {
+    m_error_message = message;
+    return false;
+  }
+
+  Eigen::Index m_samples = 0;
+  double m_support_factor = 2.0;
+  bool m_linear = true;
+  double m_exact_threshold = 8.0;
+  Positions m_positions;
+  std::string m_error_message;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_PARTITION_OF_UNITY_EIGENSOLVER_TRAITS_H

@@ -1,0 +1,465 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_PARTITION_OF_UNITY_SPACE_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_PARTITION_OF_UNITY_SPACE_H
+
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Farthest_point_sampling.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <Spectra/SymGEigsShiftSolver.h>
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <cmath>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+namespace Eigensolvers {
+
+// A space of smooth, locally supported functions on a mesh, in which the
+// low eigenpairs of the Laplace-Beltrami operator are approximated by a
+// Rayleigh-Ritz projection (after Nasikun, Brandt and Hildebrandt, "Fast
+// Approximation of Laplace-Beltrami Eigenproblems", SGP 2018):
+//
+// - k vertices are sampled by farthest point sampling; r is the largest
+//   distance of a vertex to its nearest sample;
+// - each sample s carries the bump phi_s(x) = w(d(x, s) / rho), d the distance
+//   along the edges, rho = support_factor * r, w the Wendland function
+//   (1 - t)^4 (4 t + 1), C2 and zero for t >= 1;
+// - the bumps, divided by their sum at each vertex, are a partition of unity
+//   psi_s (so the constant functions are in the space, and the eigenvalue 0
+//   of every component is exact);
+// - with `linear`, each psi_s is also multiplied by the two coordinates of
+//   the plane that fits its support best (3 functions per sample), which
+//   makes the space reproduce every function that is linear over a support,
+//   so that its error on smooth functions falls as the square of the sample
+//   spacing instead of linearly.
+//
+// The functions are the columns of a sparse n × k' matrix P; the reduced
+// problem (Pᵀ Q P) y = lambda (Pᵀ M P) y has k' unknowns whatever n is, and
+// its eigenvectors give the basis H = P Y, M-orthonormal like the exact one.
+struct Partition_of_unity_settings
+{
+  Eigen::Index samples = 0;     // k
+  double support_factor = 2.0;  // rho / r
+  bool linear = true;
+};
+
+inline double wendland_bump(double t)
+{
+  if(t >= 1.0)
+    return 0.0;
+  const double s = 1.0 - t;
+  return s * s * s * s * (4.0 * t + 1.0);
+}
+
+// The columns of P (see above), column-major with sorted rows. Throws
+// std::runtime_error when a vertex is in no support (a component without a
+// sample: more components than samples).
+inline Eigen::SparseMatrix<double>
+partition_of_unity_functions(const Edge_length_graph& graph,
+                             const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
+                             const std::vector<Eigen::Index>& samples, double radius, bool linear)
+{
+  const Eigen::Index n = graph.number_of_vertices();
+  const Eigen::Index k = static_cast<Eigen::Index>(samples.size());
+  typedef std::pair<Eigen::Index, double> Entry; // vertex, bump
+  std::vector<std::vector<Entry>> supports(static_cast<std::size_t>(k));
+
+#pragma omp parallel if(n > 20000)
+  {
+    Bounded_dijkstra search(graph);
+#pragma omp for schedule(dynamic, 16)
+    for(Eigen::Index s = 0; s < k; ++s)
+    {
+      std::vector<Entry>& support = supports[static_cast<std::size_t>(s)];
+      search.run(samples[static_cast<std::size_t>(s)], radius, [&](Eigen::Index v, double d) {
+        const double bump = wendland_bump(d / radius);
+        if(bump > 0.0)
+          support.emplace_back(v, bump);
+      });
+      std::sort(support.begin(), support.end());
+    }
+  }
+
+  Eigen::VectorXd bump_sum = Eigen::VectorXd::Zero(n);
+  for(const std::vector<Entry>& support : supports)
+    for(const Entry& e : support)
+      bump_sum[e.first] += e.second;
+  if((bump_sum.array() <= 0.0).any())
+    throw std::runtime_error("a vertex lies in no support of the sampled functions");
+
+  // The tangent plane of each support: the two principal directions of its
+  // vertices, weighted by the bump. A support too small or too flat in one
+  // direction to carry the linear functions keeps the constant one only.
+  std::vector<Eigen::Matrix<double, 3, 2>> tangents(static_cast<std::size_t>(k));
+  std::vector<char> has_linear(static_cast<std::size_t>(k), 0);
+  if(linear)
+  {
+#pragma omp parallel for schedule(static) if(n > 20000)
+    for(Eigen::Index s = 0; s < k; ++s)
+    {
+      const std::vector<Entry>& support = supports[static_cast<std::size_t>(s)];
+      if(support.size() < 6)
+        continue;
+      double weight = 0.0;
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for(const Entry& e : support)
+      {
+        weight += e.second;
+        mean += e.second * positions.row(e.first).transpose();
+      }
+      mean /= weight;
+      Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+      for(const Entry& e : support)
+      {
+        const Eigen::Vector3d d = positions.row(e.first).transpose() - mean;
+        covariance += e.second * d * d.transpose();
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+      eigen.computeDirect(covariance / weight);
+      // Spread along the second direction below 1 % of the radius: the
+      // support is nearly a curve, and a second linear function would be
+      // nearly a multiple of the first.
+      if(!(eigen.eigenvalues()[1] > 1e-4 * radius * radius))
+        continue;
+      tangents[static_cast<std::size_t>(s)].col(0) = eigen.eigenvectors().col(2);
+      tangents[static_cast<std::size_t>(s)].col(1) = eigen.eigenvectors().col(1);
+      has_linear[static_cast<std::size_t>(s)] = 1;
+    }
+  }
+
+  std::vector<Eigen::Index> first_column(static_cast<std::size_t>(k) + 1, 0);
+  Eigen::Index entries = 0;
+  for(Eigen::Index s = 0; s < k; ++s)
+  {
+    const Eigen::Index per_sample = has_linear[static_cast<std::size_t>(s)] ? 3 : 1;
+    first_column[static_cast<std::size_t>(s) + 1] = first_column[static_cast<std::size_t>(s)] + per_sample;
+    entries += per_sample * static_cast<Eigen::Index>(supports[static_cast<std::size_t>(s)].size());
+  }
+  const Eigen::Index columns = first_column.back();
+
+  Eigen::SparseMatrix<double> functions(n, columns);
+  functions.resizeNonZeros(entries);
+  typedef Eigen::SparseMatrix<double>::StorageIndex Storage_index;
+  Storage_index* outer = functions.outerIndexPtr();
+  Storage_index* inner = functions.innerIndexPtr();
+  double* values = functions.valuePtr();
+  Eigen::Index position = 0;
+  for(Eigen::Index s = 0; s < k; ++s)
+  {
+    const std::vector<Entry>& support = supports[static_cast<std::size_t>(s)];
+    const Eigen::Vector3d center = positions.row(samples[static_cast<std::size_t>(s)]).transpose();
+    const Eigen::Index per_sample = has_linear[static_cast<std::size_t>(s)] ? 3 : 1;
+    for(Eigen::Index c = 0; c < per_sample; ++c)
+    {
+      outer[first_column[static_cast<std::size_t>(s)] + c] = static_cast<Storage_index>(position);
+      for(const Entry& e : support)
+      {
+        double value = e.second / bump_sum[e.first];
+        if(c > 0)
+          value *= tangents[static_cast<std::size_t>(s)].col(c - 1).dot(
+                       positions.row(e.first).transpose() - center) /
+                   radius;
+        inner[position] = static_cast<Storage_index>(e.first);
+        values[position] = value;
+        ++position;
+      }
+    }
+  }
+  outer[columns] = static_cast<Storage_index>(position);
+  return functions;
+}
+
+// The Galerkin matrices Pᵀ Q P and Pᵀ M P (M = diag(mass)), column by column
+// on all threads: column j is Pᵀ (Q p_j), where Q p_j lives on the support
+// of p_j and one ring around it, and Pᵀ applied to it reads the rows of P
+// there. This touches each entry of P about (support size × ring) times, far
+// less than a general sparse product, which also runs on one thread only.
+inline void galerkin_matrices(const Eigen::SparseMatrix<double>& stiffness,
+                              const Eigen::VectorXd& mass,
+                              const Eigen::SparseMatrix<double>& functions,
+                              Eigen::SparseMatrix<double>& reduced_stiffness,
+                              Eigen::SparseMatrix<double>& reduced_mass)
+{
+  const Eigen::Index n = functions.rows();
+  const Eigen::Index k = functions.cols();
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
+  struct Column
+  {
+    std::vector<Eigen::Index> indices;
+    std::vector<double> stiffness, mass;
+  };
+  std::vector<Column> columns(static_cast<std::size_t>(k));
+
+#pragma omp parallel if(n > 20000)
+  {
+    std::vector<double> applied(static_cast<std::size_t>(n), 0.0);      // Q p_j
+    std::vector<char> reached(static_cast<std::size_t>(n), 0);
+    std::vector<Eigen::Index> ring;
+    std::vector<double> stiffness_sum(static_cast<std::size_t>(k), 0.0); // Pᵀ Q p_j
+    std::vector<double> mass_sum(static_cast<std::size_t>(k), 0.0);      // Pᵀ M p_j
+    std::vector<char> touched(static_cast<std::size_t>(k), 0);
+    std::vector<Eigen::Index> touched_list;
+#pragma omp for schedule(dynamic, 8)
+    for(Eigen::Index j = 0; j < k; ++j)
+    {
+      ring.clear();
+      touched_list.clear();
+      for(Eigen::SparseMatrix<double>::InnerIterator p(functions, j); p; ++p)
+      {
+        const Eigen::Index u = p.row();
+        // M p_j: its entries are on the support only.
+        for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator r(rows, u); r; ++r)
+        {
+          const Eigen::Index i = r.col();
+          if(!touched[static_cast<std::size_t>(i)])
+          {
+            touched[static_cast<std::size_t>(i)] = 1;
+            touched_list.push_back(i);
+          }
+          mass_sum[static_cast<std::size_t>(i)] += r.value() * mass[u] * p.value();
+        }
+        for(Eigen::SparseMatrix<double>::InnerIterator q(stiffness, u); q; ++q)
+        {
+          const Eigen::Index w = q.row();
+          if(!reached[static_cast<std::size_t>(w)])
+          {
+            reached[static_cast<std::size_t>(w)] = 1;
+            ring.push_back(w);
+          }
+          applied[static_cast<std::size_t>(w)] += q.value() * p.value();
+        }
+      }
+      for(Eigen::Index w : ring)
+      {
+        const double value = applied[static_cast<std::size_t>(w)];
+        applied[static_cast<std::size_t>(w)] = 0.0;
+        reached[static_cast<std::size_t>(w)] = 0;
+        for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator r(rows, w); r; ++r)
+        {
+          const Eigen::Index i = r.col();
+          if(!touched[static_cast<std::size_t>(i)])
+          {
+            touched[static_cast<std::size_t>(i)] = 1;
+            touched_list.push_back(i);
+          }
+          stiffness_sum[static_cast<std::size_t>(i)] += r.value() * value;
+        }
+      }
+      std::sort(touched_list.begin(), touched_list.end());
+      Column& column = columns[static_cast<std::size_t>(j)];
+      column.indices = touched_list;
+      column.stiffness.reserve(touched_list.size());
+      column.mass.reserve(touched_list.size());
+      for(Eigen::Index i : touched_list)
+      {
+        column.stiffness.push_back(stiffness_sum[static_cast<std::size_t>(i)]);
+        column.mass.push_back(mass_sum[static_cast<std::size_t>(i)]);
+        stiffness_sum[static_cast<std::size_t>(i)] = 0.0;
+        mass_sum[static_cast<std::size_t>(i)] = 0.0;
+        touched[static_cast<std::size_t>(i)] = 0;
+      }
+    }
+  }
+
+  Eigen::Index entries = 0;
+  for(const Column& column : columns)
+    entries += static_cast<Eigen::Index>(column.indices.size());
+  typedef Eigen::SparseMatrix<double>::StorageIndex Storage_index;
+  reduced_stiffness.resize(k, k);
+  reduced_mass.resize(k, k);
+  reduced_stiffness.resizeNonZeros(entries);
+  reduced_mass.resizeNonZeros(entries);
+  Eigen::Index position = 0;
+  for(Eigen::Index j = 0; j < k; ++j)
+  {
+    const Column& column = columns[static_cast<std::size_t>(j)];
+    reduced_stiffness.outerIndexPtr()[j] = static_cast<Storage_index>(position);
+    reduced_mass.outerIndexPtr()[j] = static_cast<Storage_index>(position);
+    for(std::size_t e = 0; e < column.indices.size(); ++e, ++position)
+    {
+      reduced_stiffness.innerIndexPtr()[position] = static_cast<Storage_index>(column.indices[e]);
+      reduced_mass.innerIndexPtr()[position] = static_cast<Storage_index>(column.indices[e]);
+      reduced_stiffness.valuePtr()[position] = column.stiffness[e];
+      reduced_mass.valuePtr()[position] = column.mass[e];
+    }
+  }
+  reduced_stiffness.outerIndexPtr()[k] = static_cast<Storage_index>(position);
+  reduced_mass.outerIndexPtr()[k] = static_cast<Storage_index>(position);
+  // Sums of rounded products are not exactly symmetric.
+  reduced_stiffness = 0.5 * (reduced_stiffness + Eigen::SparseMatrix<double>(reduced_stiffness.transpose()));
+  reduced_mass = 0.5 * (reduced_mass + Eigen::SparseMatrix<double>(reduced_mass.transpose()));
+}
+
+// H = P Y by panels of rows on all threads: each panel of H is summed in a
+// small row-major buffer from the rows of P and of Y, then written to the
+// column-major H.
+inline void prolongate(const Eigen::SparseMatrix<double>& functions, const Eigen::MatrixXd& coefficients,
+                       Eigen::MatrixXd& result)
+{
+  const Eigen::Index n = functions.rows();
+  const Eigen::Index m = coefficients.cols();
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> y = coefficients;
+  result.resize(n, m);
+  const Eigen::Index panel = 256;
+  const Eigen::Index panels = (n + panel - 1) / panel;
+#pragma omp parallel if(n > 20000)
+  {
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> buffer(panel, m);
+#pragma omp for schedule(static)
+    for(Eigen::Index b = 0; b < panels; ++b)
+    {
+      const Eigen::Index first = b * panel;
+      const Eigen::Index count = (std::min)(panel, n - first);
+      buffer.topRows(count).setZero();
+      for(Eigen::Index r = 0; r < count; ++r)
+        for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator p(rows, first + r); p; ++p)
+          buffer.row(r) += p.value() * y.row(p.col());
+      result.middleRows(first, count) = buffer.topRows(count);
+    }
+  }
+}
+
+// (A - sigma B)^{-1} x for sparse A and B, factored by a sparse SPD solver.
+template <class SparseSPDSolverTraits>
+class Sparse_shift_invert_operator
+{
+public:
+  typedef double Scalar;
+
+  Sparse_shift_invert_operator(const Eigen::SparseMatrix<double>& a,
+                               const Eigen::SparseMatrix<double>& b)
+    : m_a(a), m_b(b)
+  {}
+
+  Eigen::Index rows() const { return m_a.rows(); }
+  Eigen::Index cols() const { return m_a.cols(); }
+
+  void set_shift(double sigma)
+  {
+    const Eigen::SparseMatrix<double> shifted = m_a - sigma * m_b;
+    if(!m_solver.factor(shifted))
+      throw std::runtime_error("the factorization of the reduced shifted matrix failed");
+  }
+
+  void perform_op(const double* x_in, double* y_out) const
+  {
+    m_rhs = Eigen::Map<const Eigen::VectorXd>(x_in, rows());
+    if(!m_solver.solve(m_rhs, m_solution))
+      throw std::runtime_error("a reduced shift-invert solve failed");
+    Eigen::Map<Eigen::VectorXd>(y_out, rows()) = m_solution.col(0);
+  }
+
+private:
+  const Eigen::SparseMatrix<double>& m_a;
+  const Eigen::SparseMatrix<double>& m_b;
+  SparseSPDSolverTraits m_solver;
+  mutable Eigen::MatrixXd m_rhs, m_solution;
+};
+
+// y = B x for a sparse symmetric B.
+class Sparse_product_operator
+{
+public:
+  typedef double Scalar;
+  explicit Sparse_product_operator(const Eigen::SparseMatrix<double>& b) : m_b(b) {}
+  Eigen::Index rows() const { return m_b.rows(); }
+  Eigen::Index cols() const { return m_b.cols(); }
+  void perform_op(const double* x_in, double* y_out) const
+  {
+    Eigen::Map<Eigen::VectorXd>(y_out, rows()).noalias() =
+        m_b * Eigen::Map<const Eigen::VectorXd>(x_in, rows());
+  }
+
+private:
+  const Eigen::SparseMatrix<double>& m_b;
+};
+
+// The m smallest eigenpairs of Q h = lambda M h (M = diag(mass)) in the span
+// of the columns of `functions`: Spectra's shift-invert Lanczos on the
+// reduced pair (Pᵀ Q P, Pᵀ M P), then H = P Y. Returns false with `message`
+// set when the reduced problem is too small, singular or does not converge.
+template <class SparseSPDSolverTraits>
+bool reduced_eigenpairs(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
+                        const Eigen::SparseMatrix<double>& functions, Eigen::Index m,
+                        Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
+                        std::string& message)
+{
+  const Eigen::Index reduced = functions.cols();
+  if(reduced < m + 2)
+  {
+    message = "the space of sampled functions (" + std::to_string(reduced) +
+              " functions) is too small for " + std::to_string(m) + " frequencies";
+    return false;
+  }
+  try
+  {
+#ifdef SSMD_PU_TIMING
+    auto clock0 = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
+    double s0 = clock0();
+#endif
+    Eigen::SparseMatrix<double> reduced_stiffness, reduced_mass;
+    galerkin_matrices(stiffness, mass, functions, reduced_stiffness, reduced_mass);
+
+#ifdef SSMD_PU_TIMING
+    std::cerr << "products " << clock0() - s0 << " nnz P " << functions.nonZeros() << "\n";
+    std::cerr << "reduced size " << reduced << " nnz K " << reduced_stiffness.nonZeros() << "\n";
+    auto clock = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
+    double t0 = clock();
+#endif
+    typedef Sparse_shift_invert_operator<SparseSPDSolverTraits> Op;
+    Op op(reduced_stiffness, reduced_mass);
+    Sparse_product_operator mass_op(reduced_mass);
+    const double sigma = shift_invert_shift(mass);
+    const Eigen::Index subspace = (std::min)(reduced, (std::max)(2 * m + 1, m + 20));
+    Spectra::SymGEigsShiftSolver<Op, Sparse_product_operator, Spectra::GEigsMode::ShiftInvert>
+        solver(op, mass_op, m, subspace, sigma);
+    solver.init();
+    solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10, Spectra::SortRule::SmallestAlge);
+#ifdef SSMD_PU_TIMING
+    std::cerr << "ops " << solver.num_operations() << " iterations " << solver.num_iterations() << "\n";
+#endif
+    if(solver.info() != Spectra::CompInfo::Successful)
+    {
+      message = "the Lanczos iteration on the reduced problem did not converge";
+      return false;
+    }
+#ifdef SSMD_PU_TIMING
+    std::cerr << "spectra " << clock() - t0 << "\n";
+#endif
+    eigenvalues = solver.eigenvalues();
+    const Eigen::MatrixXd coefficients = solver.eigenvectors();
+    prolongate(functions, coefficients, eigenvectors);
+#ifdef SSMD_PU_TIMING
+    std::cerr << "prolongation " << clock() - t0 << "\n";
+#endif
+    return true;
+  }
+  catch(const std::exception& e)
+  {
+    message = e.what();
+    return false;
+  }
+}
+
+} // namespace Eigensolvers
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_PARTITION_OF_UNITY_SPACE_H

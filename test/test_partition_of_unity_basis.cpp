@@ -1,0 +1,296 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The approximate basis of Partition_of_unity_eigensolver_traits: the
+// farthest point sampling, the partition of unity and its linear functions,
+// the eigenpairs against the exact ones (upper bounds, close), and the
+// deformations it gives against those of the exact basis.
+#include "test_meshes.h"
+
+#include <CGAL/Manifold_harmonics_basis.h>
+#include <CGAL/Spectral_deformation/Partition_of_unity_eigensolver_traits.h>
+#include <CGAL/Spectral_surface_mesh_deformation.h>
+#include <CGAL/Spectral_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <vector>
+
+using namespace test_meshes;
+namespace E = CGAL::Spectral_deformation::internal::Eigensolvers;
+namespace Mesh_arrays = CGAL::Spectral_deformation::internal::Mesh;
+typedef CGAL::Partition_of_unity_eigensolver_traits<> Partition_of_unity;
+typedef boost::graph_traits<Surface_mesh>::vertex_descriptor SM_vertex;
+
+namespace {
+
+Mesh_arrays::Triangle_arrays arrays_of(const Surface_mesh& mesh)
+{
+  return Mesh_arrays::extract_triangle_arrays(mesh, CGAL::parameters::default_values());
+}
+
+Eigen::MatrixXd positions_of(const Surface_mesh& mesh)
+{
+  Eigen::MatrixXd x(mesh.number_of_vertices(), 3);
+  for(auto v : mesh.vertices())
+    x.row(v.idx()) << mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z();
+  return x;
+}
+
+// Distances along the edges from the nearest of `sources`, by a full search.
+std::vector<double> distances_from(const E::Edge_length_graph& graph, const std::vector<Eigen::Index>& sources)
+{
+  std::vector<double> nearest(static_cast<std::size_t>(graph.number_of_vertices()),
+                              std::numeric_limits<double>::infinity());
+  E::Bounded_dijkstra search(graph);
+  for(Eigen::Index s : sources)
+    search.run(s, std::numeric_limits<double>::infinity(), [&](Eigen::Index v, double d) {
+      nearest[static_cast<std::size_t>(v)] = (std::min)(nearest[static_cast<std::size_t>(v)], d);
+    });
+  return nearest;
+}
+
+// A flat square grid in z = 0, `cells` × `cells`, diagonals alternating.
+Soup flat_grid(int cells)
+{
+  Soup soup;
+  for(int j = 0; j <= cells; ++j)
+    for(int i = 0; i <= cells; ++i)
+      soup.points.emplace_back(double(i) / cells, double(j) / cells, 0.0);
+  auto id = [cells](int i, int j) { return std::size_t(j * (cells + 1) + i); };
+  for(int j = 0; j < cells; ++j)
+    for(int i = 0; i < cells; ++i)
+      if((i + j) % 2 == 0)
+      {
+        soup.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+        soup.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+      else
+      {
+        soup.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+        soup.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+  return soup;
+}
+
+} // namespace
+
+TEST_CASE("Partition of unity basis: farthest point samples cover the mesh and stay apart", "[pou]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(4));
+  const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
+  const E::Edge_length_graph graph =
+      E::edge_length_graph(CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays), arrays.positions);
+  double covering_radius = 0;
+  const std::vector<Eigen::Index> samples = E::farthest_point_samples(graph, 60, covering_radius);
+  REQUIRE(samples.size() == 60);
+  CHECK(std::set<Eigen::Index>(samples.begin(), samples.end()).size() == 60);
+  REQUIRE(covering_radius > 0);
+
+  // Every vertex within the covering radius of a sample, and it is reached.
+  const std::vector<double> nearest = distances_from(graph, samples);
+  double largest = 0;
+  for(double d : nearest)
+    largest = (std::max)(largest, d);
+  CHECK(largest == Approx(covering_radius).epsilon(1e-12));
+
+  // Each sample was the farthest vertex when chosen: no two are closer than
+  // the final covering radius.
+  for(std::size_t a = 0; a < samples.size(); ++a)
+  {
+    const std::vector<double> from_a = distances_from(graph, {samples[a]});
+    for(std::size_t b = 0; b < samples.size(); ++b)
+      if(b != a)
+        CHECK(from_a[static_cast<std::size_t>(samples[b])] >= covering_radius * (1 - 1e-12));
+  }
+}
+
+TEST_CASE("Partition of unity basis: every component gets a sample first", "[pou]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(two_spheres(2));
+  const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
+  const E::Edge_length_graph graph =
+      E::edge_length_graph(CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays), arrays.positions);
+  double covering_radius = 0;
+  std::vector<Eigen::Index> samples = E::farthest_point_samples(graph, 1, covering_radius);
+  CHECK(covering_radius == std::numeric_limits<double>::infinity());
+  samples = E::farthest_point_samples(graph, 2, covering_radius);
+  REQUIRE(samples.size() == 2);
+  CHECK(covering_radius < std::numeric_limits<double>::infinity());
+  const Eigen::Index half = graph.number_of_vertices() / 2; // the second sphere's vertices follow the first's
+  CHECK((samples[0] < half) != (samples[1] < half));
+}
+
+TEST_CASE("Partition of unity basis: the functions sum to one and reproduce linear functions", "[pou]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(flat_grid(40));
+  const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
+  const E::Edge_length_graph graph =
+      E::edge_length_graph(CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays), arrays.positions);
+  double covering_radius = 0;
+  const std::vector<Eigen::Index> samples = E::farthest_point_samples(graph, 40, covering_radius);
+  for(bool linear : {false, true})
+  {
+    INFO("linear functions " << linear);
+    const Eigen::SparseMatrix<double> functions =
+        E::partition_of_unity_functions(graph, arrays.positions, samples, 2 * covering_radius, linear);
+    REQUIRE(functions.cols() == (linear ? 3 : 1) * 40);
+    // The bumps themselves (the first column of each sample) sum to one.
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(functions.rows());
+    for(Eigen::Index s = 0; s < 40; ++s)
+      sum += functions.col((linear ? 3 : 1) * s);
+    CHECK((sum.array() - 1.0).abs().maxCoeff() < 1e-12);
+
+    // The least-squares fit of x and y in the space: exact with the linear
+    // functions, not without them.
+    const Eigen::MatrixXd dense = Eigen::MatrixXd(functions);
+    const Eigen::MatrixXd xy = arrays.positions.leftCols(2);
+    const Eigen::MatrixXd fit = dense * dense.colPivHouseholderQr().solve(xy);
+    const double residual = (fit - xy).cwiseAbs().maxCoeff();
+    if(linear)
+      CHECK(residual < 1e-10);
+    else
+      CHECK(residual > 1e-3);
+  }
+}
+
+TEST_CASE("Partition of unity basis: M-orthonormal, eigenvalues above the exact ones and close to them", "[pou]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(5)); // 10242 vertices
+  const std::size_t m = 16;                                        // l = 0..3 on the unit sphere
+  Partition_of_unity traits;
+  traits.set_number_of_samples(400);
+  REQUIRE(double(num_vertices(mesh)) >= traits.exact_threshold() * 3 * 400); // the approximation runs
+  const CGAL::Manifold_harmonics_basis<Surface_mesh, Partition_of_unity> approximate(
+      mesh, m, CGAL::parameters::default_values(), traits);
+  const CGAL::Manifold_harmonics_basis<Surface_mesh> exact(mesh, m);
+
+  const Eigen::MatrixXd& H = approximate.basis();
+  const Eigen::MatrixXd gram = H.transpose() * approximate.mass().asDiagonal() * H;
+  CHECK((gram - Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff() < 1e-10);
+  CHECK(std::abs(approximate.eigenvalues()[0]) < 1e-10);
+  for(std::size_t k = 1; k < m; ++k)
+  {
+    const double a = approximate.eigenvalues()[k], e = exact.eigenvalues()[k];
+    INFO("eigenvalue " << k << ": approximate " << a << ", exact " << e);
+    CHECK(a >= e * (1 - 1e-10)); // Rayleigh-Ritz: an upper bound
+    CHECK(a <= e * 1.01);
+  }
+  // The approximate functions lie in the span of the exact ones up to a small
+  // angle: the projection of each on the exact span keeps almost all its norm
+  // (l = 0..3 are complete groups of equal eigenvalues).
+  const Eigen::MatrixXd coefficients = exact.basis().transpose() * exact.mass().asDiagonal() * H;
+  for(std::size_t k = 0; k < m; ++k)
+    CHECK(coefficients.col(k).norm() > 0.999);
+}
+
+TEST_CASE("Partition of unity basis: clear failures", "[pou]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(4));
+  const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
+  const Eigen::SparseMatrix<double> stiffness = CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays);
+  const Eigen::VectorXd mass = CGAL::Spectral_deformation::internal::lumped_mass(arrays);
+  Eigen::VectorXd values;
+  Eigen::MatrixXd vectors;
+
+  Partition_of_unity traits;
+  traits.set_number_of_samples(50);
+  CHECK_FALSE(traits.compute(stiffness, mass, 10, values, vectors)); // no positions
+  CHECK(traits.error_message().find("positions") != std::string::npos);
+
+  traits.set_vertex_positions(arrays.positions);
+  traits.set_support_factor(0.5);
+  CHECK_FALSE(traits.compute(stiffness, mass, 10, values, vectors));
+  CHECK(traits.error_message().find("support factor") != std::string::npos);
+
+  traits.set_support_factor(2.0);
+  CHECK_FALSE(traits.compute(stiffness, mass, 200, values, vectors)); // 150 functions for 200 frequencies
+  CHECK(traits.error_message().find("too small") != std::string::npos);
+
+  CHECK(traits.compute(stiffness, mass, 10, values, vectors));
+  CHECK(values.size() == 10);
+
+  // Through the basis class: the error is a Spectral_deformation_error and
+  // the basis keeps its content.
+  traits.set_support_factor(0.5);
+  CGAL::Manifold_harmonics_basis<Surface_mesh, Partition_of_unity> basis;
+  CHECK_THROWS_AS(basis.compute(mesh, 10, CGAL::parameters::default_values(), traits),
+                  CGAL::Spectral_deformation_error);
+  CHECK(basis.empty());
+}
+
+TEST_CASE("Partition of unity basis: small meshes are solved exactly", "[pou]")
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(3)); // 642 vertices < 8 × 3 × 200
+  const CGAL::Manifold_harmonics_basis<Surface_mesh, Partition_of_unity> approximate(mesh, 9);
+  const CGAL::Manifold_harmonics_basis<Surface_mesh> exact(mesh, 9);
+  CHECK((approximate.eigenvalues() - exact.eigenvalues()).cwiseAbs().maxCoeff() < 1e-8);
+}
+
+TEST_CASE("Partition of unity basis: deformations reproduce rigid motions and follow the exact basis",
+          "[pou]")
+{
+  typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh, CGAL::Default, CGAL::Default,
+                                                  CGAL::SPECTRAL_DUAL_LAPLACIAN, Partition_of_unity>
+      Approximate;
+  typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh> Exact;
+  const double pi = 3.14159265358979323846;
+
+  // A bar of 16k vertices, bottom fixed, top bent by 60 degrees.
+  auto deform = [&](auto& deformation, Surface_mesh& mesh, const Eigen::Matrix3d& rotation,
+                    const Eigen::Vector3d& center, bool move_bottom, unsigned int iterations,
+                    double tolerance) {
+    deformation.insert_roi_vertices(vertices(mesh).begin(), vertices(mesh).end());
+    std::vector<SM_vertex> moved;
+    for(auto v : vertices(mesh))
+    {
+      const double z = mesh.point(v).z();
+      if(z < 0.3 || z > 4.7)
+        deformation.insert_control_vertex(v);
+      if(z > 4.7 || (move_bottom && z < 0.3))
+        moved.push_back(v);
+    }
+    deformation.set_number_of_frequencies(50);
+    for(SM_vertex v : moved)
+    {
+      const Point& p = mesh.point(v);
+      const Eigen::Vector3d q = center + rotation * (Eigen::Vector3d(p.x(), p.y(), p.z()) - center);
+      deformation.set_target_position(v, Point(q[0], q[1], q[2]));
+    }
+    deformation.deform(iterations, tolerance);
+    INFO(deformation.deform_report().message);
+    REQUIRE(deformation.deform_report().success);
+  };
+  const Soup soup = bar(200, 20);
+  const Eigen::MatrixXd rest = positions_of(to_mesh<Surface_mesh>(soup));
+  const double diagonal = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
+  REQUIRE(rest.rows() > 8 * 3 * 500); // 10 m samples: the approximation runs
+
+  {
+    Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+    Approximate deformation(mesh);
+    const Eigen::Matrix3d turn = Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    deform(deformation, mesh, turn, Eigen::Vector3d::Zero(), true, 2000, 1e-13);
+    CHECK((positions_of(mesh) - rest * turn.transpose()).rowwise().norm().maxCoeff() < 1e-6 * diagonal);
+  }
+
+  const Eigen::Matrix3d bend = Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Vector3d center(0, 0, 5.0);
+  Surface_mesh approximate_mesh = to_mesh<Surface_mesh>(soup), exact_mesh = to_mesh<Surface_mesh>(soup);
+  Approximate approximate(approximate_mesh);
+  Exact exact(exact_mesh);
+  deform(approximate, approximate_mesh, bend, center, false, 10, 0.0);
+  deform(exact, exact_mesh, bend, center, false, 10, 0.0);
+  const Eigen::MatrixXd a = positions_of(approximate_mesh), e = positions_of(exact_mesh);
+  const double largest = (a - e).rowwise().norm().maxCoeff() / diagonal;
+  const double moved = (e - rest).rowwise().norm().maxCoeff() / diagonal;
+  INFO("largest distance to the result with the exact basis " << largest << " of the diagonal; the top moved by "
+                                                               << moved);
+  CHECK(largest < 0.01);
+  CHECK(moved > 0.1);
+}
