@@ -19,6 +19,7 @@
 #include "deformation_cases.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
+#include <CGAL/Spectral_deformation/Partition_of_unity_eigensolver_traits.h>
 #include <CGAL/Surface_mesh_deformation.h>
 
 #include <iostream>
@@ -33,6 +34,9 @@ typedef CGAL::Surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL:
                                        CGAL::Default>
     Cgal_arap;
 typedef CGAL::Spectral_surface_mesh_deformation<Mesh> Spectral;
+typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL::SPECTRAL_DUAL_LAPLACIAN,
+                                                CGAL::Partition_of_unity_eigensolver_traits<>>
+    Spectral_partition_of_unity;
 
 struct Options
 {
@@ -43,6 +47,7 @@ struct Options
   std::vector<unsigned int> levels{0, 1, 2};
   std::size_t frequencies = 100;
   std::vector<std::size_t> patches{1000}; // besides the full iteration
+  std::vector<std::size_t> approximate_patches; // variants with the partition-of-unity basis (0: full)
   int drags = 30;
   int cgal_drags = 30;
   int cgal_drags_large = 5;          // above large_mesh vertices
@@ -60,6 +65,8 @@ void print_usage(const char* program)
             << "  --levels l1,l2,...     Loop subdivision levels (default 0,1,2)\n"
             << "  --frequencies m        basis size (default 100)\n"
             << "  --patches k1,k2,...    rotation patches besides the full iteration (default 1000)\n"
+            << "  --approximate-basis k1,k2,...  also run these numbers of patches (0: the full\n"
+            << "                         iteration) with Partition_of_unity_eigensolver_traits\n"
             << "  --drags N              target changes along the path (default 30)\n"
             << "  --cgal-drags N         of CGAL ARAP (default 30)\n"
             << "  --cgal-drags-large N   of CGAL ARAP above --large-mesh vertices (default 5)\n"
@@ -101,6 +108,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--levels") o.levels = parse_list<unsigned int>(value());
     else if(a == "--frequencies") o.frequencies = std::stoul(value());
     else if(a == "--patches") o.patches = parse_list<std::size_t>(value());
+    else if(a == "--approximate-basis") o.approximate_patches = parse_list<std::size_t>(value());
     else if(a == "--drags") o.drags = std::stoi(value());
     else if(a == "--cgal-drags") o.cgal_drags = std::stoi(value());
     else if(a == "--cgal-drags-large") o.cgal_drags_large = std::stoi(value());
@@ -165,19 +173,25 @@ std::vector<double> column(const std::vector<Drag>& drags, Member member)
   return values;
 }
 
+template <class Deformation = Spectral>
 Variant_result run_package(const Deformation_case& c, const Case_geometry& g, const Options& o,
                            std::size_t patches)
 {
+  constexpr bool approximate = std::is_same_v<Deformation, Spectral_partition_of_unity>;
   Variant_result result;
   result.patches = patches;
-  result.name = patches == 0 ? "spectral, full iteration" : "spectral, " + std::to_string(patches) + " patches";
+  result.name = std::string(approximate ? "spectral, partition-of-unity basis, " : "spectral, ") +
+                (patches == 0 ? "full iteration" : std::to_string(patches) + " patches");
   Mesh mesh = c.mesh;
   const auto start = Clock::now();
-  Spectral d(mesh);
-  typename Spectral::Eigensolver_traits eigensolver;
-  // This program owns its process (OpenBLAS threads, SuiteSparse's allocator).
-  eigensolver.set_process_wide_tuning(true);
-  d.set_eigensolver_traits(eigensolver);
+  Deformation d(mesh);
+  if constexpr(!approximate)
+  {
+    typename Spectral::Eigensolver_traits eigensolver;
+    // This program owns its process (OpenBLAS threads, SuiteSparse's allocator).
+    eigensolver.set_process_wide_tuning(true);
+    d.set_eigensolver_traits(eigensolver);
+  }
   d.set_number_of_frequencies(o.frequencies);
   d.set_rotation_patches(patches);
   d.insert_roi_vertices(c.roi.begin(), c.roi.end());
@@ -281,6 +295,8 @@ int main(int argc, char** argv)
     results.push_back(run_package(c, g, o, 0));
     for(std::size_t k : o.patches)
       results.push_back(run_package(c, g, o, k));
+    for(std::size_t k : o.approximate_patches)
+      results.push_back(run_package<Spectral_partition_of_unity>(c, g, o, k));
     if(!o.skip_cgal)
       results.push_back(run_cgal(c, g, n > o.large_mesh ? o.cgal_drags_large : o.cgal_drags, o.drags));
     const double cgal_p50 = o.skip_cgal ? not_a_number : quantile(column(results.back().drags, &Drag::total), 0.5);

@@ -16,9 +16,9 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
-#include <chrono>
-#include <iostream>
 #include <exception>
+#include <limits>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -42,8 +42,12 @@ namespace CGAL {
 /// that fits its support (`set_linear_functions()`, on by default), three
 /// functions per sample. The eigenpairs of the cotangent Laplacian
 /// restricted to this space (a Rayleigh-Ritz projection: `Pᵀ Q P` against
-/// `Pᵀ M P`) are computed with Spectra's shift-invert Lanczos, and the
-/// basis is `H = P Y`.
+/// `Pᵀ M P`, `P` the `n × 3k` matrix of the functions) are computed with
+/// Spectra's shift-invert Lanczos, on the standard problem that a sparse
+/// Cholesky factorization of `Pᵀ M P` makes of them, and the basis is
+/// `H = P Y`. Only the sampling, the functions, `Pᵀ Q P`, `Pᵀ M P` and `H`
+/// cost time proportional to `n`; the eigenproblem has `3k` unknowns
+/// whatever the size of the mesh.
 ///
 /// What the approximation gives:
 /// - the basis is M-orthonormal (`Hᵀ M H = I`) like the exact one, and every
@@ -134,30 +138,20 @@ public:
       return fail("the support factor must be at least 1");
     try
     {
-#ifdef SSMD_PU_TIMING
-      auto clock = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
-      double t0 = clock();
-#define SSMD_PU_T(what) { double t = clock(); std::cerr << what << " " << t - t0 << "\n"; t0 = t; }
-#else
-#define SSMD_PU_T(what)
-#endif
       const E::Edge_length_graph graph = E::edge_length_graph(stiffness, m_positions);
       double covering_radius = 0.0;
       const std::vector<Eigen::Index> sampled =
           E::farthest_point_samples(graph, samples, covering_radius);
-      SSMD_PU_T("graph+fps")
       if(!(covering_radius < std::numeric_limits<double>::infinity()))
         return fail("the mesh has more connected components than samples");
       if(!(covering_radius > 0.0))
         return fail("every vertex is a sample: the mesh is too small for the sampled space");
       const Eigen::SparseMatrix<double> space = E::partition_of_unity_functions(
           graph, m_positions, sampled, m_support_factor * covering_radius, m_linear);
-      SSMD_PU_T("functions")
       std::string message;
       if(!E::reduced_eigenpairs<SparseSPDSolverTraits>(stiffness, mass, space, m, eigenvalues,
                                                        eigenvectors, message))
         return fail(message);
-      SSMD_PU_T("reduced")
     }
     catch(const std::bad_alloc&)
     {

@@ -12,11 +12,10 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
-#include <Spectra/SymGEigsShiftSolver.h>
+#include <Eigen/SparseCholesky>
+#include <Spectra/SymEigsShiftSolver.h>
 
 #include <algorithm>
-#include <chrono>
-#include <iostream>
 #include <cmath>
 #include <exception>
 #include <stdexcept>
@@ -187,17 +186,38 @@ partition_of_unity_functions(const Edge_length_graph& graph,
 // The Galerkin matrices Pᵀ Q P and Pᵀ M P (M = diag(mass)), column by column
 // on all threads: column j is Pᵀ (Q p_j), where Q p_j lives on the support
 // of p_j and one ring around it, and Pᵀ applied to it reads the rows of P
-// there. This touches each entry of P about (support size × ring) times, far
-// less than a general sparse product, which also runs on one thread only.
+// there. Consecutive columns with the same support (the functions of one
+// sample) are done together, so that those rows are read once for all of
+// them. This touches far fewer entries than a general sparse product, which
+// also runs on one thread only.
 inline void galerkin_matrices(const Eigen::SparseMatrix<double>& stiffness,
                               const Eigen::VectorXd& mass,
                               const Eigen::SparseMatrix<double>& functions,
                               Eigen::SparseMatrix<double>& reduced_stiffness,
                               Eigen::SparseMatrix<double>& reduced_mass)
 {
+  typedef Eigen::SparseMatrix<double>::StorageIndex Storage_index;
   const Eigen::Index n = functions.rows();
   const Eigen::Index k = functions.cols();
   const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
+  const Storage_index* outer = functions.outerIndexPtr();
+  const Storage_index* inner = functions.innerIndexPtr();
+  const double* values = functions.valuePtr();
+
+  // Groups of consecutive columns with the same rows, at most `widest`.
+  const Eigen::Index widest = 4;
+  std::vector<Eigen::Index> group_start;
+  for(Eigen::Index j = 0; j < k; ++j)
+  {
+    const bool same = !group_start.empty() && j - group_start.back() < widest &&
+                      outer[j + 1] - outer[j] == outer[j] - outer[j - 1] &&
+                      std::equal(inner + outer[j], inner + outer[j + 1], inner + outer[j - 1]);
+    if(!same)
+      group_start.push_back(j);
+  }
+  const Eigen::Index groups = static_cast<Eigen::Index>(group_start.size());
+  group_start.push_back(k);
+
   struct Column
   {
     std::vector<Eigen::Index> indices;
@@ -207,31 +227,42 @@ inline void galerkin_matrices(const Eigen::SparseMatrix<double>& stiffness,
 
 #pragma omp parallel if(n > 20000)
   {
-    std::vector<double> applied(static_cast<std::size_t>(n), 0.0);      // Q p_j
+    std::vector<double> applied(static_cast<std::size_t>(n * widest), 0.0); // Q p_j, j in the group
     std::vector<char> reached(static_cast<std::size_t>(n), 0);
     std::vector<Eigen::Index> ring;
-    std::vector<double> stiffness_sum(static_cast<std::size_t>(k), 0.0); // Pᵀ Q p_j
-    std::vector<double> mass_sum(static_cast<std::size_t>(k), 0.0);      // Pᵀ M p_j
+    std::vector<double> stiffness_sum(static_cast<std::size_t>(k * widest), 0.0); // Pᵀ Q p_j
+    std::vector<double> mass_sum(static_cast<std::size_t>(k * widest), 0.0);      // Pᵀ M p_j
     std::vector<char> touched(static_cast<std::size_t>(k), 0);
     std::vector<Eigen::Index> touched_list;
-#pragma omp for schedule(dynamic, 8)
-    for(Eigen::Index j = 0; j < k; ++j)
+    auto touch = [&](Eigen::Index i) {
+      if(!touched[static_cast<std::size_t>(i)])
+      {
+        touched[static_cast<std::size_t>(i)] = 1;
+        touched_list.push_back(i);
+      }
+    };
+#pragma omp for schedule(dynamic, 4)
+    for(Eigen::Index g = 0; g < groups; ++g)
     {
+      const Eigen::Index first = group_start[static_cast<std::size_t>(g)];
+      const Eigen::Index width = group_start[static_cast<std::size_t>(g) + 1] - first;
+      const Eigen::Index length = outer[first + 1] - outer[first];
       ring.clear();
       touched_list.clear();
-      for(Eigen::SparseMatrix<double>::InnerIterator p(functions, j); p; ++p)
+      for(Eigen::Index e = 0; e < length; ++e)
       {
-        const Eigen::Index u = p.row();
-        // M p_j: its entries are on the support only.
+        const Eigen::Index u = inner[outer[first] + e];
+        double p[widest];
+        for(Eigen::Index c = 0; c < width; ++c)
+          p[c] = values[outer[first + c] + e];
+        // M p_j lives on the support only.
         for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator r(rows, u); r; ++r)
         {
           const Eigen::Index i = r.col();
-          if(!touched[static_cast<std::size_t>(i)])
-          {
-            touched[static_cast<std::size_t>(i)] = 1;
-            touched_list.push_back(i);
-          }
-          mass_sum[static_cast<std::size_t>(i)] += r.value() * mass[u] * p.value();
+          touch(i);
+          const double weight = r.value() * mass[u];
+          for(Eigen::Index c = 0; c < width; ++c)
+            mass_sum[static_cast<std::size_t>(i * widest + c)] += weight * p[c];
         }
         for(Eigen::SparseMatrix<double>::InnerIterator q(stiffness, u); q; ++q)
         {
@@ -241,45 +272,50 @@ inline void galerkin_matrices(const Eigen::SparseMatrix<double>& stiffness,
             reached[static_cast<std::size_t>(w)] = 1;
             ring.push_back(w);
           }
-          applied[static_cast<std::size_t>(w)] += q.value() * p.value();
+          for(Eigen::Index c = 0; c < width; ++c)
+            applied[static_cast<std::size_t>(w * widest + c)] += q.value() * p[c];
         }
       }
       for(Eigen::Index w : ring)
       {
-        const double value = applied[static_cast<std::size_t>(w)];
-        applied[static_cast<std::size_t>(w)] = 0.0;
+        double a[widest];
+        for(Eigen::Index c = 0; c < width; ++c)
+        {
+          a[c] = applied[static_cast<std::size_t>(w * widest + c)];
+          applied[static_cast<std::size_t>(w * widest + c)] = 0.0;
+        }
         reached[static_cast<std::size_t>(w)] = 0;
         for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator r(rows, w); r; ++r)
         {
           const Eigen::Index i = r.col();
-          if(!touched[static_cast<std::size_t>(i)])
-          {
-            touched[static_cast<std::size_t>(i)] = 1;
-            touched_list.push_back(i);
-          }
-          stiffness_sum[static_cast<std::size_t>(i)] += r.value() * value;
+          touch(i);
+          for(Eigen::Index c = 0; c < width; ++c)
+            stiffness_sum[static_cast<std::size_t>(i * widest + c)] += r.value() * a[c];
         }
       }
       std::sort(touched_list.begin(), touched_list.end());
-      Column& column = columns[static_cast<std::size_t>(j)];
-      column.indices = touched_list;
-      column.stiffness.reserve(touched_list.size());
-      column.mass.reserve(touched_list.size());
-      for(Eigen::Index i : touched_list)
+      for(Eigen::Index c = 0; c < width; ++c)
       {
-        column.stiffness.push_back(stiffness_sum[static_cast<std::size_t>(i)]);
-        column.mass.push_back(mass_sum[static_cast<std::size_t>(i)]);
-        stiffness_sum[static_cast<std::size_t>(i)] = 0.0;
-        mass_sum[static_cast<std::size_t>(i)] = 0.0;
-        touched[static_cast<std::size_t>(i)] = 0;
+        Column& column = columns[static_cast<std::size_t>(first + c)];
+        column.indices = touched_list;
+        column.stiffness.reserve(touched_list.size());
+        column.mass.reserve(touched_list.size());
+        for(Eigen::Index i : touched_list)
+        {
+          column.stiffness.push_back(stiffness_sum[static_cast<std::size_t>(i * widest + c)]);
+          column.mass.push_back(mass_sum[static_cast<std::size_t>(i * widest + c)]);
+          stiffness_sum[static_cast<std::size_t>(i * widest + c)] = 0.0;
+          mass_sum[static_cast<std::size_t>(i * widest + c)] = 0.0;
+        }
       }
+      for(Eigen::Index i : touched_list)
+        touched[static_cast<std::size_t>(i)] = 0;
     }
   }
 
   Eigen::Index entries = 0;
   for(const Column& column : columns)
     entries += static_cast<Eigen::Index>(column.indices.size());
-  typedef Eigen::SparseMatrix<double>::StorageIndex Storage_index;
   reduced_stiffness.resize(k, k);
   reduced_mass.resize(k, k);
   reduced_stiffness.resizeNonZeros(entries);
@@ -335,17 +371,31 @@ inline void prolongate(const Eigen::SparseMatrix<double>& functions, const Eigen
   }
 }
 
-// (A - sigma B)^{-1} x for sparse A and B, factored by a sparse SPD solver.
+// The reduced problem A y = lambda B y (B = Pᵀ M P, not diagonal) in standard
+// form: with B = G Gᵀ (a sparse Cholesky factor, G = Pᵀ L for the fill-reducing
+// permutation P of Eigen's factorization), C = G⁻¹ A G⁻ᵀ has the same
+// eigenvalues and the eigenvectors z = Gᵀ y. Its shift-invert operator
+// (C - sigma I)⁻¹ = Gᵀ (A - sigma B)⁻¹ G costs two sparse triangular
+// products and one solve, and the Lanczos iteration then works in the
+// Euclidean inner product: a generalized Lanczos iteration instead needs
+// several products with B per step, for its B-inner products and
+// reorthogonalization, which cost more than the solve at this size.
 template <class SparseSPDSolverTraits>
-class Sparse_shift_invert_operator
+class Standard_form_shift_invert_operator
 {
 public:
   typedef double Scalar;
 
-  Sparse_shift_invert_operator(const Eigen::SparseMatrix<double>& a,
-                               const Eigen::SparseMatrix<double>& b)
+  Standard_form_shift_invert_operator(const Eigen::SparseMatrix<double>& a,
+                                      const Eigen::SparseMatrix<double>& b)
     : m_a(a), m_b(b)
-  {}
+  {
+    m_mass_factor.compute(b);
+    if(m_mass_factor.info() != Eigen::Success)
+      throw std::runtime_error("the Gram matrix of the sampled functions is not positive definite");
+    m_lower = m_mass_factor.matrixL();
+    m_upper = m_lower.transpose();
+  }
 
   Eigen::Index rows() const { return m_a.rows(); }
   Eigen::Index cols() const { return m_a.cols(); }
@@ -357,37 +407,33 @@ public:
       throw std::runtime_error("the factorization of the reduced shifted matrix failed");
   }
 
+  // y = Gᵀ (A - sigma B)⁻¹ G x
   void perform_op(const double* x_in, double* y_out) const
   {
-    m_rhs = Eigen::Map<const Eigen::VectorXd>(x_in, rows());
+    const Eigen::Map<const Eigen::VectorXd> x(x_in, rows());
+    m_work = m_lower * x;
+    m_rhs = m_mass_factor.permutationP().transpose() * m_work;
     if(!m_solver.solve(m_rhs, m_solution))
       throw std::runtime_error("a reduced shift-invert solve failed");
-    Eigen::Map<Eigen::VectorXd>(y_out, rows()) = m_solution.col(0);
+    m_work = m_mass_factor.permutationP() * m_solution.col(0);
+    Eigen::Map<Eigen::VectorXd>(y_out, rows()).noalias() = m_upper * m_work;
+  }
+
+  // y = G⁻ᵀ z, the eigenvectors of the reduced problem from those of C.
+  Eigen::MatrixXd generalized_vectors(const Eigen::MatrixXd& z) const
+  {
+    const Eigen::MatrixXd solved = m_upper.triangularView<Eigen::Upper>().solve(z);
+    return m_mass_factor.permutationP().transpose() * solved;
   }
 
 private:
   const Eigen::SparseMatrix<double>& m_a;
   const Eigen::SparseMatrix<double>& m_b;
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> m_mass_factor;
+  Eigen::SparseMatrix<double> m_lower, m_upper;
   SparseSPDSolverTraits m_solver;
+  mutable Eigen::VectorXd m_work;
   mutable Eigen::MatrixXd m_rhs, m_solution;
-};
-
-// y = B x for a sparse symmetric B.
-class Sparse_product_operator
-{
-public:
-  typedef double Scalar;
-  explicit Sparse_product_operator(const Eigen::SparseMatrix<double>& b) : m_b(b) {}
-  Eigen::Index rows() const { return m_b.rows(); }
-  Eigen::Index cols() const { return m_b.cols(); }
-  void perform_op(const double* x_in, double* y_out) const
-  {
-    Eigen::Map<Eigen::VectorXd>(y_out, rows()).noalias() =
-        m_b * Eigen::Map<const Eigen::VectorXd>(x_in, rows());
-  }
-
-private:
-  const Eigen::SparseMatrix<double>& m_b;
 };
 
 // The m smallest eigenpairs of Q h = lambda M h (M = diag(mass)) in the span
@@ -409,45 +455,24 @@ bool reduced_eigenpairs(const Eigen::SparseMatrix<double>& stiffness, const Eige
   }
   try
   {
-#ifdef SSMD_PU_TIMING
-    auto clock0 = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
-    double s0 = clock0();
-#endif
     Eigen::SparseMatrix<double> reduced_stiffness, reduced_mass;
     galerkin_matrices(stiffness, mass, functions, reduced_stiffness, reduced_mass);
 
-#ifdef SSMD_PU_TIMING
-    std::cerr << "products " << clock0() - s0 << " nnz P " << functions.nonZeros() << "\n";
-    std::cerr << "reduced size " << reduced << " nnz K " << reduced_stiffness.nonZeros() << "\n";
-    auto clock = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
-    double t0 = clock();
-#endif
-    typedef Sparse_shift_invert_operator<SparseSPDSolverTraits> Op;
+    typedef Standard_form_shift_invert_operator<SparseSPDSolverTraits> Op;
     Op op(reduced_stiffness, reduced_mass);
-    Sparse_product_operator mass_op(reduced_mass);
     const double sigma = shift_invert_shift(mass);
     const Eigen::Index subspace = (std::min)(reduced, (std::max)(2 * m + 1, m + 20));
-    Spectra::SymGEigsShiftSolver<Op, Sparse_product_operator, Spectra::GEigsMode::ShiftInvert>
-        solver(op, mass_op, m, subspace, sigma);
+    Spectra::SymEigsShiftSolver<Op> solver(op, m, subspace, sigma);
     solver.init();
     solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10, Spectra::SortRule::SmallestAlge);
-#ifdef SSMD_PU_TIMING
-    std::cerr << "ops " << solver.num_operations() << " iterations " << solver.num_iterations() << "\n";
-#endif
     if(solver.info() != Spectra::CompInfo::Successful)
     {
       message = "the Lanczos iteration on the reduced problem did not converge";
       return false;
     }
-#ifdef SSMD_PU_TIMING
-    std::cerr << "spectra " << clock() - t0 << "\n";
-#endif
     eigenvalues = solver.eigenvalues();
-    const Eigen::MatrixXd coefficients = solver.eigenvectors();
+    const Eigen::MatrixXd coefficients = op.generalized_vectors(solver.eigenvectors());
     prolongate(functions, coefficients, eigenvectors);
-#ifdef SSMD_PU_TIMING
-    std::cerr << "prolongation " << clock() - t0 << "\n";
-#endif
     return true;
   }
   catch(const std::exception& e)
