@@ -16,8 +16,11 @@
 #include <Spectra/SymEigsShiftSolver.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -57,6 +60,42 @@ struct Partition_of_unity_settings
   bool linear = true;
 };
 
+// The first exception thrown in the loop bodies of an OpenMP region, which
+// must not leave the region: the bodies after it are skipped, and
+// `rethrow()` throws it again once the region is over.
+class Parallel_exception
+{
+public:
+  template <class Body>
+  void run(Body&& body) noexcept
+  {
+    if(m_failed.load(std::memory_order_relaxed))
+      return;
+    try
+    {
+      body();
+    }
+    catch(...)
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      if(!m_error)
+        m_error = std::current_exception();
+      m_failed.store(true, std::memory_order_relaxed);
+    }
+  }
+
+  void rethrow() const
+  {
+    if(m_error)
+      std::rethrow_exception(m_error);
+  }
+
+private:
+  std::atomic<bool> m_failed{false};
+  std::mutex m_mutex;
+  std::exception_ptr m_error;
+};
+
 inline double wendland_bump(double t)
 {
   if(t >= 1.0)
@@ -78,21 +117,28 @@ partition_of_unity_functions(const Edge_length_graph& graph,
   typedef std::pair<Eigen::Index, double> Entry; // vertex, bump
   std::vector<std::vector<Entry>> supports(static_cast<std::size_t>(k));
 
+  Parallel_exception failure;
+#ifdef _OPENMP
 #pragma omp parallel if(n > 20000)
+#endif
   {
-    Bounded_dijkstra search(graph);
+    std::unique_ptr<Bounded_dijkstra> search;
+    failure.run([&] { search = std::make_unique<Bounded_dijkstra>(graph); });
+#ifdef _OPENMP
 #pragma omp for schedule(dynamic, 16)
+#endif
     for(Eigen::Index s = 0; s < k; ++s)
-    {
-      std::vector<Entry>& support = supports[static_cast<std::size_t>(s)];
-      search.run(samples[static_cast<std::size_t>(s)], radius, [&](Eigen::Index v, double d) {
-        const double bump = wendland_bump(d / radius);
-        if(bump > 0.0)
-          support.emplace_back(v, bump);
+      failure.run([&] {
+        std::vector<Entry>& support = supports[static_cast<std::size_t>(s)];
+        search->run(samples[static_cast<std::size_t>(s)], radius, [&](Eigen::Index v, double d) {
+          const double bump = wendland_bump(d / radius);
+          if(bump > 0.0)
+            support.emplace_back(v, bump);
+        });
+        std::sort(support.begin(), support.end());
       });
-      std::sort(support.begin(), support.end());
-    }
   }
+  failure.rethrow();
 
   Eigen::VectorXd bump_sum = Eigen::VectorXd::Zero(n);
   for(const std::vector<Entry>& support : supports)
@@ -108,7 +154,9 @@ partition_of_unity_functions(const Edge_length_graph& graph,
   std::vector<char> has_linear(static_cast<std::size_t>(k), 0);
   if(linear)
   {
+#ifdef _OPENMP
 #pragma omp parallel for schedule(static) if(n > 20000)
+#endif
     for(Eigen::Index s = 0; s < k; ++s)
     {
       const std::vector<Entry>& support = supports[static_cast<std::size_t>(s)];
@@ -225,25 +273,48 @@ inline void galerkin_matrices(const Eigen::SparseMatrix<double>& stiffness,
   };
   std::vector<Column> columns(static_cast<std::size_t>(k));
 
-#pragma omp parallel if(n > 20000)
+  // The work arrays of one thread.
+  struct Work
   {
-    std::vector<double> applied(static_cast<std::size_t>(n * widest), 0.0); // Q p_j, j in the group
-    std::vector<char> reached(static_cast<std::size_t>(n), 0);
+    Work(Eigen::Index n, Eigen::Index k, Eigen::Index widest)
+      : applied(static_cast<std::size_t>(n * widest), 0.0), reached(static_cast<std::size_t>(n), 0),
+        stiffness_sum(static_cast<std::size_t>(k * widest), 0.0),
+        mass_sum(static_cast<std::size_t>(k * widest), 0.0), touched(static_cast<std::size_t>(k), 0)
+    {}
+    std::vector<double> applied; // Q p_j, j in the group
+    std::vector<char> reached;
     std::vector<Eigen::Index> ring;
-    std::vector<double> stiffness_sum(static_cast<std::size_t>(k * widest), 0.0); // Pᵀ Q p_j
-    std::vector<double> mass_sum(static_cast<std::size_t>(k * widest), 0.0);      // Pᵀ M p_j
-    std::vector<char> touched(static_cast<std::size_t>(k), 0);
+    std::vector<double> stiffness_sum; // Pᵀ Q p_j
+    std::vector<double> mass_sum;      // Pᵀ M p_j
+    std::vector<char> touched;
     std::vector<Eigen::Index> touched_list;
-    auto touch = [&](Eigen::Index i) {
-      if(!touched[static_cast<std::size_t>(i)])
-      {
-        touched[static_cast<std::size_t>(i)] = 1;
-        touched_list.push_back(i);
-      }
-    };
+  };
+  Parallel_exception failure;
+#ifdef _OPENMP
+#pragma omp parallel if(n > 20000)
+#endif
+  {
+    std::unique_ptr<Work> work;
+    failure.run([&] { work = std::make_unique<Work>(n, k, widest); });
+#ifdef _OPENMP
 #pragma omp for schedule(dynamic, 4)
+#endif
     for(Eigen::Index g = 0; g < groups; ++g)
-    {
+      failure.run([&] {
+      std::vector<double>& applied = work->applied;
+      std::vector<char>& reached = work->reached;
+      std::vector<Eigen::Index>& ring = work->ring;
+      std::vector<double>& stiffness_sum = work->stiffness_sum;
+      std::vector<double>& mass_sum = work->mass_sum;
+      std::vector<char>& touched = work->touched;
+      std::vector<Eigen::Index>& touched_list = work->touched_list;
+      auto touch = [&](Eigen::Index i) {
+        if(!touched[static_cast<std::size_t>(i)])
+        {
+          touched[static_cast<std::size_t>(i)] = 1;
+          touched_list.push_back(i);
+        }
+      };
       const Eigen::Index first = group_start[static_cast<std::size_t>(g)];
       const Eigen::Index width = group_start[static_cast<std::size_t>(g) + 1] - first;
       const Eigen::Index length = outer[first + 1] - outer[first];
@@ -310,8 +381,9 @@ inline void galerkin_matrices(const Eigen::SparseMatrix<double>& stiffness,
       }
       for(Eigen::Index i : touched_list)
         touched[static_cast<std::size_t>(i)] = 0;
-    }
+      });
   }
+  failure.rethrow();
 
   Eigen::Index entries = 0;
   for(const Column& column : columns)
@@ -354,21 +426,29 @@ inline void prolongate(const Eigen::SparseMatrix<double>& functions, const Eigen
   result.resize(n, m);
   const Eigen::Index panel = 256;
   const Eigen::Index panels = (n + panel - 1) / panel;
+  typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Buffer;
+  Parallel_exception failure;
+#ifdef _OPENMP
 #pragma omp parallel if(n > 20000)
+#endif
   {
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> buffer(panel, m);
+    std::unique_ptr<Buffer> buffer;
+    failure.run([&] { buffer = std::make_unique<Buffer>(panel, m); });
+#ifdef _OPENMP
 #pragma omp for schedule(static)
+#endif
     for(Eigen::Index b = 0; b < panels; ++b)
-    {
-      const Eigen::Index first = b * panel;
-      const Eigen::Index count = (std::min)(panel, n - first);
-      buffer.topRows(count).setZero();
-      for(Eigen::Index r = 0; r < count; ++r)
-        for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator p(rows, first + r); p; ++p)
-          buffer.row(r) += p.value() * y.row(p.col());
-      result.middleRows(first, count) = buffer.topRows(count);
-    }
+      failure.run([&] {
+        const Eigen::Index first = b * panel;
+        const Eigen::Index count = (std::min)(panel, n - first);
+        buffer->topRows(count).setZero();
+        for(Eigen::Index r = 0; r < count; ++r)
+          for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator p(rows, first + r); p; ++p)
+            buffer->row(r) += p.value() * y.row(p.col());
+        result.middleRows(first, count) = buffer->topRows(count);
+      });
   }
+  failure.rethrow();
 }
 
 // The reduced problem A y = lambda B y (B = Pᵀ M P, not diagonal) in standard
