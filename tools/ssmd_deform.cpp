@@ -12,6 +12,7 @@
 #include "ssmd_deform/Rendering.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spectral_deformation/Partition_of_unity_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/version.h>
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Surface_mesh.h>
@@ -33,6 +34,7 @@
 #include <new>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <unistd.h>
@@ -44,6 +46,8 @@ typedef Kernel::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 typedef Mesh::Vertex_index Vertex_index;
 typedef CGAL::Block_lanczos_eigensolver_traits<> Eigensolver_traits;
+// The eigensolver of --basis approximate.
+typedef CGAL::Partition_of_unity_eigensolver_traits<> Approximate_eigensolver_traits;
 typedef Deformation_tool::Basis_progress_bar<Eigensolver_traits::Progress> Progress_bar;
 
 const char* const program_name = "ssmd_deform";
@@ -182,7 +186,7 @@ struct Fnv1a
 // that two meshes, even of the same name, or two regions of one mesh never
 // share a file.
 std::string cache_file_name(const std::string& mesh_file, const std::vector<char>& in_roi,
-                            std::size_t frequencies)
+                            std::size_t frequencies, bool approximate)
 {
   Fnv1a hash;
   std::ifstream in(mesh_file, std::ios::binary);
@@ -196,7 +200,8 @@ std::string cache_file_name(const std::string& mesh_file, const std::vector<char
   hash.add(m.data(), m.size());
   std::ostringstream name;
   name << std::filesystem::path(mesh_file).stem().string() << '-' << std::hex << std::setw(16)
-       << std::setfill('0') << hash.state << std::dec << "-m" << frequencies << ".ssmd-basis";
+       << std::setfill('0') << hash.state << std::dec << "-m" << frequencies
+       << (approximate ? "-approximate" : "") << ".ssmd-basis";
   return name.str();
 }
 
@@ -318,10 +323,16 @@ public:
     switch(m_options.algorithm)
     {
     case Deformation_tool::Algorithm::SPECTRAL:
-      deform<CGAL::SPECTRAL_DUAL_LAPLACIAN>(mesh, constraints);
+      if(m_options.approximate_basis)
+        deform<CGAL::SPECTRAL_DUAL_LAPLACIAN, Approximate_eigensolver_traits>(mesh, constraints);
+      else
+        deform<CGAL::SPECTRAL_DUAL_LAPLACIAN>(mesh, constraints);
       break;
     case Deformation_tool::Algorithm::LINEAR:
-      deform<CGAL::SPECTRAL_LINEAR>(mesh, constraints);
+      if(m_options.approximate_basis)
+        deform<CGAL::SPECTRAL_LINEAR, Approximate_eigensolver_traits>(mesh, constraints);
+      else
+        deform<CGAL::SPECTRAL_LINEAR>(mesh, constraints);
       break;
     case Deformation_tool::Algorithm::SPATIAL:
       deform<CGAL::SPATIAL_DUAL_LAPLACIAN>(mesh, constraints);
@@ -406,11 +417,14 @@ private:
       deformation->set_constraint_policy(m_options.policy == Deformation_tool::Policy::EXACT
                                              ? CGAL::EXACT_CONSTRAINTS
                                              : CGAL::SOFT_CONSTRAINTS);
-      Eigensolver_traits eigensolver;
-      eigensolver.set_process_wide_tuning(true); // this program owns its process
-      eigensolver.set_progress_callback(
-          [&progress_bar](const Eigensolver_traits::Progress& progress) { progress_bar(progress); });
-      deformation->set_eigensolver_traits(eigensolver);
+      if constexpr(std::is_same_v<typename Deformation::Eigensolver_traits, Eigensolver_traits>)
+      {
+        Eigensolver_traits eigensolver;
+        eigensolver.set_process_wide_tuning(true); // this program owns its process
+        eigensolver.set_progress_callback(
+            [&progress_bar](const Eigensolver_traits::Progress& progress) { progress_bar(progress); });
+        deformation->set_eigensolver_traits(eigensolver);
+      }
     }
     for(Vertex_index v : mesh.vertices())
       if(constraints.in_roi[v.idx()])
@@ -447,7 +461,8 @@ private:
       use_cache = false;
       return std::string();
     }
-    return (folder / cache_file_name(m_options.mesh_file, constraints.in_roi, m_options.frequencies))
+    return (folder / cache_file_name(m_options.mesh_file, constraints.in_roi, m_options.frequencies,
+                                     m_options.approximate_basis))
         .string();
   }
 
@@ -482,10 +497,10 @@ private:
     return true;
   }
 
-  template <CGAL::Spectral_deformation_algorithm_tag TAG>
+  template <CGAL::Spectral_deformation_algorithm_tag TAG, class ET = CGAL::Default>
   void deform(Mesh& mesh, const Deformation_tool::Deformation_constraints& constraints)
   {
-    typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, TAG> Deformation;
+    typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, TAG, ET> Deformation;
     constexpr bool uses_basis = Deformation::has_basis;
     const Deformation_tool::Progress_display display =
         m_options.quiet                ? Deformation_tool::Progress_display::NONE
@@ -544,8 +559,9 @@ private:
     {
       std::ostringstream origin;
       origin << "computed in " << std::setprecision(3) << m_report.preprocess.basis_seconds << " s ("
-             << (m_report.dense_eigensolve ? std::string("dense solver")
-                                           : std::to_string(m_report.eigensolver_solves) + " Lanczos solves")
+             << (m_options.approximate_basis ? std::string("approximate")
+                 : m_report.dense_eigensolve ? std::string("dense solver")
+                                             : std::to_string(m_report.eigensolver_solves) + " Lanczos solves")
              << ")";
       if constexpr(uses_basis)
       {

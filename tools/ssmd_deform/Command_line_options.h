@@ -43,6 +43,7 @@ struct Command_line_options
   Algorithm algorithm = Algorithm::SPECTRAL;
   Policy policy = Policy::EXACT;
   Energy energy = Energy::DUAL_LAPLACIAN;
+  bool approximate_basis = false; // CGAL::Partition_of_unity_eigensolver_traits
   std::size_t frequencies = 100;
   long long rotation_patches = -1; // negative: the library's default
   unsigned int iterations = 10;
@@ -252,7 +253,7 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
 {
   Command_line_options options;
   std::vector<std::string> files;
-  std::string algorithm = "spectral", policy = "exact", energy = "dual-laplacian";
+  std::string algorithm = "spectral", policy = "exact", energy = "dual-laplacian", basis = "exact";
 
   CLI::App app(internal::description_text(), "ssmd_deform");
   app.formatter(std::make_shared<internal::Help_formatter>());
@@ -299,6 +300,13 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
                                 [](const std::string& v) {
         return v == "dual-laplacian" || v == "arap" || v == "dual-laplacian-and-arap";
       }));
+  app.add_option("--basis", basis,
+                 "how the basis of the spectral algorithms is computed: exact (default, the "
+                 "eigenvectors) or approximate (eigenvectors approximated in a space of functions "
+                 "around sampled vertices: several times faster on large meshes).")
+      ->option_text("NAME")
+      ->check(internal::expects("--basis", "exact or approximate",
+                                [](const std::string& v) { return v == "exact" || v == "approximate"; }));
   app.add_option("--iterations", options.iterations,
                  "maximal number of solves of the iteration (default 10, at least 1).")
       ->option_text("N")
@@ -393,6 +401,7 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
   options.energy = energy == "arap"                      ? Energy::ARAP
                    : energy == "dual-laplacian-and-arap" ? Energy::DUAL_LAPLACIAN_AND_ARAP
                                                          : Energy::DUAL_LAPLACIAN;
+  options.approximate_basis = (basis == "approximate");
   options.use_cache = !no_cache;
 
   if(files.size() == 2)
