@@ -86,7 +86,7 @@ public:
   void set_number_of_samples(Eigen::Index samples) { m_samples = (std::max<Eigen::Index>)(samples, 0); }
 
   /// The radius of each bump over the largest distance of a vertex to its
-  /// nearest sample (default 2: each vertex lies under about ten bumps).
+  /// nearest sample (default 2: each vertex lies under about eight bumps on the armadillo).
   double support_factor() const { return m_support_factor; }
   /// Sets the support factor; values below 1 would leave vertices under no
   /// bump, and `compute()` then fails.
