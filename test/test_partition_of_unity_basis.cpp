@@ -34,6 +34,12 @@ Mesh_arrays::Triangle_arrays arrays_of(const Surface_mesh& mesh)
   return Mesh_arrays::extract_triangle_arrays(mesh, CGAL::parameters::default_values());
 }
 
+// The graph of the edges of the mesh, as the traits build it.
+E::Edge_length_graph graph_of(const Mesh_arrays::Triangle_arrays& arrays)
+{
+  return E::edge_length_graph(CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays), arrays.positions);
+}
+
 Eigen::MatrixXd positions_of(const Surface_mesh& mesh)
 {
   Eigen::MatrixXd x(mesh.number_of_vertices(), 3);
@@ -84,8 +90,7 @@ TEST_CASE("Partition of unity basis: farthest point samples cover the mesh and s
 {
   const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(4));
   const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
-  const E::Edge_length_graph graph =
-      E::edge_length_graph(CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays), arrays.positions);
+  const E::Edge_length_graph graph = graph_of(arrays);
   double covering_radius = 0;
   const std::vector<Eigen::Index> samples = E::farthest_point_samples(graph, 60, covering_radius);
   REQUIRE(samples.size() == 60);
@@ -114,8 +119,7 @@ TEST_CASE("Partition of unity basis: every component gets a sample first", "[pou
 {
   const Surface_mesh mesh = to_mesh<Surface_mesh>(two_spheres(2));
   const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
-  const E::Edge_length_graph graph =
-      E::edge_length_graph(CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays), arrays.positions);
+  const E::Edge_length_graph graph = graph_of(arrays);
   double covering_radius = 0;
   std::vector<Eigen::Index> samples = E::farthest_point_samples(graph, 1, covering_radius);
   CHECK(covering_radius == std::numeric_limits<double>::infinity());
@@ -130,8 +134,7 @@ TEST_CASE("Partition of unity basis: the functions sum to one and reproduce line
 {
   const Surface_mesh mesh = to_mesh<Surface_mesh>(flat_grid(40));
   const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
-  const E::Edge_length_graph graph =
-      E::edge_length_graph(CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays), arrays.positions);
+  const E::Edge_length_graph graph = graph_of(arrays);
   double covering_radius = 0;
   const std::vector<Eigen::Index> samples = E::farthest_point_samples(graph, 40, covering_radius);
   for(bool linear : {false, true})

@@ -323,16 +323,10 @@ public:
     switch(m_options.algorithm)
     {
     case Deformation_tool::Algorithm::SPECTRAL:
-      if(m_options.approximate_basis)
-        deform<CGAL::SPECTRAL_DUAL_LAPLACIAN, Approximate_eigensolver_traits>(mesh, constraints);
-      else
-        deform<CGAL::SPECTRAL_DUAL_LAPLACIAN>(mesh, constraints);
+      deform_with_basis<CGAL::SPECTRAL_DUAL_LAPLACIAN>(mesh, constraints);
       break;
     case Deformation_tool::Algorithm::LINEAR:
-      if(m_options.approximate_basis)
-        deform<CGAL::SPECTRAL_LINEAR, Approximate_eigensolver_traits>(mesh, constraints);
-      else
-        deform<CGAL::SPECTRAL_LINEAR>(mesh, constraints);
+      deform_with_basis<CGAL::SPECTRAL_LINEAR>(mesh, constraints);
       break;
     case Deformation_tool::Algorithm::SPATIAL:
       deform<CGAL::SPATIAL_DUAL_LAPLACIAN>(mesh, constraints);
@@ -495,6 +489,16 @@ private:
     }
     m_report.cache_seconds = seconds_since(start);
     return true;
+  }
+
+  // deform() for an algorithm with a basis, computed as --basis says.
+  template <CGAL::Spectral_deformation_algorithm_tag TAG>
+  void deform_with_basis(Mesh& mesh, const Deformation_tool::Deformation_constraints& constraints)
+  {
+    if(m_options.approximate_basis)
+      deform<TAG, Approximate_eigensolver_traits>(mesh, constraints);
+    else
+      deform<TAG>(mesh, constraints);
   }
 
   template <CGAL::Spectral_deformation_algorithm_tag TAG, class ET = CGAL::Default>

@@ -881,25 +881,20 @@ void run_case(const Deformation_case& c, const Options& options, unsigned int le
                                             "cgal_original", results);
     progress(step);
   }
+  // The spectral algorithm with the basis of the options.
+  auto run_spectral = [&](CGAL::Spectral_constraint_policy policy, const std::string& label,
+                          const std::string& key) {
+    if(options.partition_of_unity_basis)
+      run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN, Partition_of_unity_traits>(
+          c, spectral_options, policy, label, key, results);
+    else
+      run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(c, spectral_options, policy, label, key, results);
+  };
   step = Clock::now();
-  if(options.partition_of_unity_basis)
-    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN, Partition_of_unity_traits>(
-        c, spectral_options, CGAL::EXACT_CONSTRAINTS, "spectral dual Laplacian, exact, " + m,
-        "spectral_exact", results);
-  else
-    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
-        c, spectral_options, CGAL::EXACT_CONSTRAINTS, "spectral dual Laplacian, exact, " + m,
-        "spectral_exact", results);
+  run_spectral(CGAL::EXACT_CONSTRAINTS, "spectral dual Laplacian, exact, " + m, "spectral_exact");
   progress(step);
   step = Clock::now();
-  if(options.partition_of_unity_basis)
-    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN, Partition_of_unity_traits>(
-        c, spectral_options, CGAL::SOFT_CONSTRAINTS, "spectral dual Laplacian, soft, " + m,
-        "spectral_soft", results);
-  else
-    run_package_algorithm<CGAL::SPECTRAL_DUAL_LAPLACIAN>(
-        c, spectral_options, CGAL::SOFT_CONSTRAINTS, "spectral dual Laplacian, soft, " + m,
-        "spectral_soft", results);
+  run_spectral(CGAL::SOFT_CONSTRAINTS, "spectral dual Laplacian, soft, " + m, "spectral_soft");
   progress(step);
   if(!sweep_only)
   {

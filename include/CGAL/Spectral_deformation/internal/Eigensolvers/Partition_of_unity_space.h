@@ -9,6 +9,7 @@
 
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Farthest_point_sampling.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Spectra_lanczos.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -241,13 +242,13 @@ partition_of_unity_functions(const Edge_length_graph& graph,
 inline void galerkin_matrices(const Eigen::SparseMatrix<double>& stiffness,
                               const Eigen::VectorXd& mass,
                               const Eigen::SparseMatrix<double>& functions,
+                              const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows,
                               Eigen::SparseMatrix<double>& reduced_stiffness,
                               Eigen::SparseMatrix<double>& reduced_mass)
 {
   typedef Eigen::SparseMatrix<double>::StorageIndex Storage_index;
   const Eigen::Index n = functions.rows();
   const Eigen::Index k = functions.cols();
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
   const Storage_index* outer = functions.outerIndexPtr();
   const Storage_index* inner = functions.innerIndexPtr();
   const double* values = functions.valuePtr();
@@ -416,12 +417,11 @@ inline void galerkin_matrices(const Eigen::SparseMatrix<double>& stiffness,
 // H = P Y by panels of rows on all threads: each panel of H is summed in a
 // small row-major buffer from the rows of P and of Y, then written to the
 // column-major H.
-inline void prolongate(const Eigen::SparseMatrix<double>& functions, const Eigen::MatrixXd& coefficients,
-                       Eigen::MatrixXd& result)
+inline void prolongate(const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows,
+                       const Eigen::MatrixXd& coefficients, Eigen::MatrixXd& result)
 {
-  const Eigen::Index n = functions.rows();
+  const Eigen::Index n = rows.rows();
   const Eigen::Index m = coefficients.cols();
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
   const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> y = coefficients;
   result.resize(n, m);
   const Eigen::Index panel = 256;
@@ -474,7 +474,6 @@ public:
     if(m_mass_factor.info() != Eigen::Success)
       throw std::runtime_error("the Gram matrix of the sampled functions is not positive definite");
     m_lower = m_mass_factor.matrixL();
-    m_upper = m_lower.transpose();
   }
 
   Eigen::Index rows() const { return m_a.rows(); }
@@ -496,13 +495,13 @@ public:
     if(!m_solver.solve(m_rhs, m_solution))
       throw std::runtime_error("a reduced shift-invert solve failed");
     m_work = m_mass_factor.permutationP() * m_solution.col(0);
-    Eigen::Map<Eigen::VectorXd>(y_out, rows()).noalias() = m_upper * m_work;
+    Eigen::Map<Eigen::VectorXd>(y_out, rows()).noalias() = m_lower.transpose() * m_work;
   }
 
   // y = G⁻ᵀ z, the eigenvectors of the reduced problem from those of C.
   Eigen::MatrixXd generalized_vectors(const Eigen::MatrixXd& z) const
   {
-    const Eigen::MatrixXd solved = m_upper.triangularView<Eigen::Upper>().solve(z);
+    const Eigen::MatrixXd solved = m_lower.transpose().triangularView<Eigen::Upper>().solve(z);
     return m_mass_factor.permutationP().transpose() * solved;
   }
 
@@ -510,7 +509,7 @@ private:
   const Eigen::SparseMatrix<double>& m_a;
   const Eigen::SparseMatrix<double>& m_b;
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> m_mass_factor;
-  Eigen::SparseMatrix<double> m_lower, m_upper;
+  Eigen::SparseMatrix<double> m_lower;
   SparseSPDSolverTraits m_solver;
   mutable Eigen::VectorXd m_work;
   mutable Eigen::MatrixXd m_rhs, m_solution;
@@ -535,14 +534,15 @@ bool reduced_eigenpairs(const Eigen::SparseMatrix<double>& stiffness, const Eige
   }
   try
   {
+    // P by rows, read by both the Galerkin products and the prolongation.
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
     Eigen::SparseMatrix<double> reduced_stiffness, reduced_mass;
-    galerkin_matrices(stiffness, mass, functions, reduced_stiffness, reduced_mass);
+    galerkin_matrices(stiffness, mass, functions, rows, reduced_stiffness, reduced_mass);
 
     typedef Standard_form_shift_invert_operator<SparseSPDSolverTraits> Op;
     Op op(reduced_stiffness, reduced_mass);
     const double sigma = shift_invert_shift(mass);
-    const Eigen::Index subspace = (std::min)(reduced, (std::max)(2 * m + 1, m + 20));
-    Spectra::SymEigsShiftSolver<Op> solver(op, m, subspace, sigma);
+    Spectra::SymEigsShiftSolver<Op> solver(op, m, spectra_subspace_dimension(reduced, m), sigma);
     solver.init();
     solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10, Spectra::SortRule::SmallestAlge);
     if(solver.info() != Spectra::CompInfo::Successful)
@@ -552,7 +552,7 @@ bool reduced_eigenpairs(const Eigen::SparseMatrix<double>& stiffness, const Eige
     }
     eigenvalues = solver.eigenvalues();
     const Eigen::MatrixXd coefficients = op.generalized_vectors(solver.eigenvectors());
-    prolongate(functions, coefficients, eigenvectors);
+    prolongate(rows, coefficients, eigenvectors);
     return true;
   }
   catch(const std::exception& e)
