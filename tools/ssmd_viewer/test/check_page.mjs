@@ -263,6 +263,8 @@ try {
   check(fixedError < 1e-5 * radius, `the fixed vertices stayed (error ${fixedError.toExponential(2)})`);
   check(outsideMoved === 0, 'the vertices outside the region stayed');
 
+  check(!(await page.evaluate(() => window.ssmdViewer.antialias())),
+        'under the software renderer (SwiftShader) the page draws without multisampling');
   const speed = await page.evaluate((a) => window.ssmdViewer.animateHandle(4, a), 0.2 * radius);
   check(speed.updatesPerSecond > 0, `updates per second while the handle moves: ${speed.updatesPerSecond.toFixed(1)} ` +
         `at ${speed.framesPerSecond.toFixed(1)} frames per second (last drag: deform ${speed.lastDeformMs.toFixed(1)} ms, ` +

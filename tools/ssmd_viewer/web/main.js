@@ -12,7 +12,19 @@ const $ = (id) => document.getElementById(id);
 const COLORS = { none: [0.75, 0.75, 0.72], roi: [0.94, 0.82, 0.25], fixed: [0.31, 0.63, 1.0], handle: [1.0, 0.31, 0.31] };
 
 // --- scene ---------------------------------------------------------------
-const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+// A software rasterizer (SwiftShader, llvmpipe: a browser without a GPU)
+// draws on the CPU cores the server deforms on; multisampling there doubles
+// the cost of a frame, so it is kept for hardware renderers.
+function softwareRenderer() {
+  const gl = document.createElement('canvas').getContext('webgl2');
+  if (!gl) return false;
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  gl.getExtension('WEBGL_lose_context')?.loseContext();
+  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+}
+const antialias = !softwareRenderer();
+const renderer = new THREE.WebGLRenderer({ antialias, preserveDrawingBuffer: true });
 renderer.setPixelRatio(window.devicePixelRatio);
 $('view').appendChild(renderer.domElement);
 const scene = new THREE.Scene();
@@ -617,4 +629,5 @@ window.ssmdViewer = {
   normals: () => Array.from(geometry.attributes.normal.array),
   idle: () => !inFlight && !dirty,
   stats: () => ({ ...stats }),
+  antialias: () => antialias,
 };
