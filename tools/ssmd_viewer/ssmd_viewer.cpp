@@ -262,6 +262,10 @@ int main(int argc, char** argv)
     {
       tcp::socket socket(context);
       acceptor.accept(socket);
+      // A reply is a JSON header then its binary positions: with Nagle's
+      // algorithm the second write waits for the acknowledgement of the
+      // first, which the browser delays (tens of milliseconds per drag).
+      socket.set_option(tcp::no_delay(true));
       std::thread(serve_connection, std::move(socket), mesh, std::cref(options)).detach();
     }
   }
