@@ -48,6 +48,7 @@ struct Options
   std::size_t frequencies = 100;
   std::vector<std::size_t> patches{1000}; // besides the full iteration
   std::vector<std::size_t> approximate_patches; // variants with the partition-of-unity basis (0: full)
+  bool skip_exact = false;                     // no variant with the exact basis
   int drags = 30;
   int cgal_drags = 30;
   int cgal_drags_large = 5;          // above large_mesh vertices
@@ -71,6 +72,7 @@ void print_usage(const char* program)
             << "  --cgal-drags N         of CGAL ARAP (default 30)\n"
             << "  --cgal-drags-large N   of CGAL ARAP above --large-mesh vertices (default 5)\n"
             << "  --large-mesh N         (default 300000)\n"
+            << "  --skip-exact           only the variants of --approximate-basis\n"
             << "  --skip-cgal            no CGAL ARAP\n";
 }
 
@@ -109,6 +111,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--frequencies") o.frequencies = std::stoul(value());
     else if(a == "--patches") o.patches = parse_list<std::size_t>(value());
     else if(a == "--approximate-basis") o.approximate_patches = parse_list<std::size_t>(value());
+    else if(a == "--skip-exact") o.skip_exact = true;
     else if(a == "--drags") o.drags = std::stoi(value());
     else if(a == "--cgal-drags") o.cgal_drags = std::stoi(value());
     else if(a == "--cgal-drags-large") o.cgal_drags_large = std::stoi(value());
@@ -149,6 +152,7 @@ struct Variant_result
   std::string name;
   std::size_t patches = 0; // 0: full
   double first_result = 0; // constructor, preprocess and the first drag
+  double peak_gib = 0;      // peak resident size of the process during the variant
   std::vector<Drag> drags;
   Quality last;
 };
@@ -182,6 +186,7 @@ Variant_result run_package(const Deformation_case& c, const Case_geometry& g, co
   result.patches = patches;
   result.name = std::string(approximate ? "spectral, partition-of-unity basis, " : "spectral, ") +
                 (patches == 0 ? "full iteration" : std::to_string(patches) + " patches");
+  reset_peak_resident_size();
   Mesh mesh = c.mesh;
   const auto start = Clock::now();
   Deformation d(mesh);
@@ -220,6 +225,7 @@ Variant_result run_package(const Deformation_case& c, const Case_geometry& g, co
     }
   }
   result.last = measure(g, positions_of(mesh));
+  result.peak_gib = double(proc_field_kib("/proc/self/status", "VmHWM")) / (1024.0 * 1024.0);
   return result;
 }
 
@@ -227,6 +233,7 @@ Variant_result run_cgal(const Deformation_case& c, const Case_geometry& g, int d
 {
   Variant_result result;
   result.name = std::string("CGAL ARAP, ") + cgal_solver_name;
+  reset_peak_resident_size();
   Mesh mesh = c.mesh;
   const auto start = Clock::now();
   Cgal_arap d(mesh);
@@ -251,6 +258,7 @@ Variant_result run_cgal(const Deformation_case& c, const Case_geometry& g, int d
     }
   }
   result.last = measure(g, positions_of(mesh));
+  result.peak_gib = double(proc_field_kib("/proc/self/status", "VmHWM")) / (1024.0 * 1024.0);
   return result;
 }
 
@@ -292,9 +300,12 @@ int main(int argc, char** argv)
     const std::size_t n = num_vertices(c.mesh);
     std::cerr << c.name << " @" << level << ": " << n << " vertices\n";
     std::vector<Variant_result> results;
-    results.push_back(run_package(c, g, o, 0));
-    for(std::size_t k : o.patches)
-      results.push_back(run_package(c, g, o, k));
+    if(!o.skip_exact)
+    {
+      results.push_back(run_package(c, g, o, 0));
+      for(std::size_t k : o.patches)
+        results.push_back(run_package(c, g, o, k));
+    }
     for(std::size_t k : o.approximate_patches)
       results.push_back(run_package<Spectral_partition_of_unity>(c, g, o, k));
     if(!o.skip_cgal)
@@ -305,8 +316,8 @@ int main(int argc, char** argv)
            << ", " << c.handles.size() << " handle vertices\n\n"
            << "| algorithm | drags | p50 per drag | p95 | drags/s (p50) | CGAL p50 / p50 | iteration p50 | "
               "detail transfer p50 | output p50 | first result | ARAP energy, last drag | folded pairs | "
-              "edge change max |\n"
-           << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+              "edge change max | peak memory |\n"
+           << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     for(const Variant_result& r : results)
     {
       const double p50 = quantile(column(r.drags, &Drag::total), 0.5);
@@ -318,7 +329,8 @@ int main(int argc, char** argv)
              << (cgal ? "–" : ms(quantile(column(r.drags, &Drag::transfer), 0.5))) << " | "
              << (cgal ? "–" : ms(quantile(column(r.drags, &Drag::output), 0.5))) << " | "
              << duration(r.first_result) << " | " << scientific(r.last.arap_energy) << " | "
-             << r.last.folded_pairs << " | " << percent(r.last.max_edge_change) << " |\n";
+             << r.last.folded_pairs << " | " << percent(r.last.max_edge_change) << " | "
+             << fixed(r.peak_gib, 2) << " GiB |\n";
       if(data.is_open())
         for(std::size_t i = 0; i < r.drags.size(); ++i)
           data << n << "\t" << r.name << "\t" << (cgal ? -1 : static_cast<long>(r.patches)) << "\t" << i + 2
@@ -347,6 +359,8 @@ int main(int argc, char** argv)
       << "- *iteration*: `deform_report().solve_seconds`; *detail transfer*: "
       << "`deform_report().detail_transfer_seconds`; *output*: the rest of the drag (targets, writing the "
       << "mesh). For CGAL, the whole `deform()`.\n"
+      << "- *peak memory*: the process's peak resident size (VmHWM, reset before each variant) from the "
+      << "constructor to the last drag, including the case's own copy of the mesh.\n"
       << tables.str();
   std::cerr << "wrote " << o.output << "\n";
   return 0;
