@@ -5,10 +5,15 @@
 
 #include <CGAL/Dual_mesh_laplacian.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Sparse_times_dense.h>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 using namespace test_meshes;
 typedef CGAL::Dual_mesh_laplacian<Surface_mesh> Dual;
@@ -221,4 +226,40 @@ TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's
   float_panels.multiply_transpose(X, projected);
   CHECK((shape - rounded * C).cwiseAbs().maxCoeff() < 1e-13);
   CHECK((projected - rounded.transpose() * X).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+TEST_CASE("the blocked sparse-times-basis product is Eigen's, bit for bit, on any number of threads", "[dual]")
+{
+  using CGAL::Spectral_deformation::internal::Linear_algebra::sparse_times_dense;
+  using namespace CGAL::Spectral_deformation::internal::Mesh;
+  const Soup soup = bumpy_plane(40);
+  const Dual_mesh_operator op(dual_triangles(soup), static_cast<Eigen::Index>(soup.points.size()));
+  Positions positions(static_cast<Eigen::Index>(soup.points.size()), 3);
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    positions.row(static_cast<Eigen::Index>(i)) << soup.points[i].x(), soup.points[i].y(), soup.points[i].z();
+  const Eigen::SparseMatrix<double> LF = op.laplacian_operator(op.evaluate(positions).weights);
+  const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(LF.transpose()) * LF;
+  REQUIRE(normal.nonZeros() * 100 > 1000000); // large enough for the threaded path
+  // Column counts below, at and above a block, and one that leaves a partial block.
+  for(Eigen::Index columns : {1, 8, 13, 100})
+  {
+    const Eigen::MatrixXd H = Eigen::MatrixXd::Random(normal.cols(), columns);
+    const Eigen::MatrixXd expected = normal * H;
+    Eigen::MatrixXd product;
+    sparse_times_dense(normal, H, product);
+    CHECK((product.array() == expected.array()).all());
+#ifdef _OPENMP
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    Eigen::MatrixXd single;
+    sparse_times_dense(normal, H, single);
+    omp_set_num_threads(threads);
+    CHECK((single.array() == product.array()).all());
+#endif
+  }
+  // A rectangular operator (rows of dual coordinates by vertices).
+  const Eigen::MatrixXd H = Eigen::MatrixXd::Random(LF.cols(), 11);
+  Eigen::MatrixXd product;
+  sparse_times_dense(LF, H, product);
+  CHECK((product.array() == (LF * H).array()).all());
 }

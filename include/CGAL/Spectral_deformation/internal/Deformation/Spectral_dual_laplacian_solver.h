@@ -12,6 +12,8 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Rotated_edges.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Dense_products.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Sparse_times_dense.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
@@ -91,7 +93,7 @@ private:
       const Eigen::SparseMatrix<double> LF = m_dual.laplacian_operator(m_rest_coordinates.weights);
       const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(LF.transpose()) * LF;
       // Never form the dense rows×m matrix L̂F H: (LᵀL) H is n×m like H.
-      m_G0 = basis.transpose() * (normal * basis);
+      m_G0 = projected(normal, basis);
     }
     else
     {
@@ -110,7 +112,7 @@ private:
       }
       const Eigen::SparseMatrix<double>& Q = *stiffness;
       m_rotated_edges.initialize(Q, m_smooth_rest, m_smooth_rest);
-      const Eigen::MatrixXd arap = basis.transpose() * (Q * basis);
+      const Eigen::MatrixXd arap = projected(Q, basis);
       // The sum weighs the two energies alike: its two matrices get the same
       // trace (their ratio depends on the resolution of the mesh).
       if(uses_dual_energy() && arap.trace() > 0)
@@ -124,6 +126,16 @@ private:
               (rest.positions.colwise().maxCoeff() - rest.positions.colwise().minCoeff()).norm();
     m_factored = false;
     build_patches();
+  }
+
+  /// Hᵀ A H for a sparse A.
+  static Eigen::MatrixXd projected(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& H)
+  {
+    Eigen::MatrixXd AH;
+    Linear_algebra::sparse_times_dense(A, H, AH);
+    Eigen::MatrixXd result(H.cols(), H.cols());
+    Linear_algebra::dense_product(true, H, false, AH, 1.0, 0.0, result);
+    return result;
   }
 
 public:

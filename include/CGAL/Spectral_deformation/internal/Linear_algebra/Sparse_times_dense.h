@@ -1,0 +1,67 @@
+// Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// This header is part of the Spectral Surface Mesh Deformation package, which
+// builds on CGAL but is not part of the CGAL library.
+
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_SPARSE_TIMES_DENSE_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_SPARSE_TIMES_DENSE_H
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+
+namespace CGAL {
+namespace Spectral_deformation {
+namespace internal {
+namespace Linear_algebra {
+
+/// `result` = A H for a column-major sparse A and a dense H with many
+/// columns (a basis, n × m). Eigen's product makes one pass over A for each
+/// column of H; here each pass serves a block of `block_columns` columns of
+/// H, accumulated in a row-major buffer so that a nonzero of A updates one
+/// cache line whatever the ordering of the vertices, and the blocks are
+/// shared by the OpenMP threads. Every entry sums the same terms in the same
+/// order as Eigen's product (the columns of A in ascending order), so the
+/// result does not depend on the number of threads.
+inline void sparse_times_dense(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& H,
+                               Eigen::MatrixXd& result)
+{
+  constexpr Eigen::Index block_columns = 8;
+  typedef Eigen::Matrix<double, Eigen::Dynamic, block_columns, Eigen::RowMajor> Row_block;
+  eigen_assert(A.cols() == H.rows());
+  result.resize(A.rows(), H.cols());
+  const long long blocks = (H.cols() + block_columns - 1) / block_columns;
+#ifdef _OPENMP
+#pragma omp parallel if(A.nonZeros() * H.cols() > 1000000)
+#endif
+  {
+    Row_block buffer(A.rows(), block_columns);
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic)
+#endif
+    for(long long b = 0; b < blocks; ++b)
+    {
+      const Eigen::Index first = static_cast<Eigen::Index>(b) * block_columns;
+      const Eigen::Index width = (std::min)(block_columns, H.cols() - first);
+      buffer.setZero();
+      Eigen::Matrix<double, 1, block_columns> h = Eigen::Matrix<double, 1, block_columns>::Zero();
+      for(Eigen::Index k = 0; k < A.outerSize(); ++k)
+      {
+        for(Eigen::Index c = 0; c < width; ++c)
+          h[c] = H(k, first + c);
+        for(Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it)
+          buffer.row(it.index()) += it.value() * h;
+      }
+      result.middleCols(first, width) = buffer.leftCols(width);
+    }
+  }
+}
+
+} // namespace Linear_algebra
+} // namespace internal
+} // namespace Spectral_deformation
+} // namespace CGAL
+
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_SPARSE_TIMES_DENSE_H
