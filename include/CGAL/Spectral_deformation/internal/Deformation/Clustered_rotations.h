@@ -41,8 +41,13 @@ inline std::vector<int> farthest_point_seeds(const Positions& centroids, std::si
   const std::size_t candidate_count = (std::min)(faces, 32 * count);
   const std::size_t stride = faces / candidate_count;
   std::vector<int> candidates(candidate_count);
+  // The candidates' centroids side by side: every seed reads all of them.
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> points(static_cast<Eigen::Index>(candidate_count), 3);
   for(std::size_t i = 0; i < candidate_count; ++i)
+  {
     candidates[i] = static_cast<int>(i * stride);
+    points.row(static_cast<Eigen::Index>(i)) = centroids.row(candidates[i]);
+  }
   std::vector<double> distance(candidate_count, std::numeric_limits<double>::infinity());
   std::vector<int> seeds;
   seeds.reserve(count);
@@ -55,7 +60,7 @@ inline std::vector<int> farthest_point_seeds(const Positions& centroids, std::si
     double farthest = -1;
     for(std::size_t i = 0; i < candidate_count; ++i)
     {
-      distance[i] = (std::min)(distance[i], (centroids.row(candidates[i]) - p).squaredNorm());
+      distance[i] = (std::min)(distance[i], (points.row(static_cast<Eigen::Index>(i)) - p).squaredNorm());
       if(distance[i] > farthest)
       {
         farthest = distance[i];
