@@ -49,6 +49,7 @@ struct Options
   std::vector<std::size_t> patches{1000}; // besides the full iteration
   std::vector<std::size_t> approximate_patches; // variants with the partition-of-unity basis (0: full)
   bool skip_exact = false;                     // no variant with the exact basis
+  std::size_t basis_samples = 0;               // of the partition-of-unity basis (0: its default)
   int drags = 30;
   int cgal_drags = 30;
   int cgal_drags_large = 5;          // above large_mesh vertices
@@ -73,6 +74,7 @@ void print_usage(const char* program)
             << "  --cgal-drags-large N   of CGAL ARAP above --large-mesh vertices (default 5)\n"
             << "  --large-mesh N         (default 300000)\n"
             << "  --skip-exact           only the variants of --approximate-basis\n"
+            << "  --basis-samples k      samples of the partition-of-unity basis (default: its own)\n"
             << "  --skip-cgal            no CGAL ARAP\n";
 }
 
@@ -112,6 +114,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--patches") o.patches = parse_list<std::size_t>(value());
     else if(a == "--approximate-basis") o.approximate_patches = parse_list<std::size_t>(value());
     else if(a == "--skip-exact") o.skip_exact = true;
+    else if(a == "--basis-samples") o.basis_samples = parse_list<std::size_t>(value()).at(0);
     else if(a == "--drags") o.drags = std::stoi(value());
     else if(a == "--cgal-drags") o.cgal_drags = std::stoi(value());
     else if(a == "--cgal-drags-large") o.cgal_drags_large = std::stoi(value());
@@ -186,6 +189,7 @@ Variant_result run_package(const Deformation_case& c, const Case_geometry& g, co
   Variant_result result;
   result.patches = patches;
   result.name = std::string(approximate ? "spectral, partition-of-unity basis, " : "spectral, ") +
+                (approximate && o.basis_samples > 0 ? std::to_string(o.basis_samples) + " samples, " : "") +
                 (patches == 0 ? "full iteration" : std::to_string(patches) + " patches");
   reset_peak_resident_size();
   Mesh mesh = c.mesh;
@@ -196,6 +200,12 @@ Variant_result run_package(const Deformation_case& c, const Case_geometry& g, co
     typename Spectral::Eigensolver_traits eigensolver;
     // This program owns its process (OpenBLAS threads, SuiteSparse's allocator).
     eigensolver.set_process_wide_tuning(true);
+    d.set_eigensolver_traits(eigensolver);
+  }
+  else if(o.basis_samples > 0)
+  {
+    typename Deformation::Eigensolver_traits eigensolver;
+    eigensolver.set_number_of_samples(o.basis_samples);
     d.set_eigensolver_traits(eigensolver);
   }
   d.set_number_of_frequencies(o.frequencies);
