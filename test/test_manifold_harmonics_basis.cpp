@@ -6,10 +6,14 @@
 #include <CGAL/Manifold_harmonics_basis.h>
 #include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Dirichlet_system.h>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <random>
 #include <cstdlib>
 #include <limits>
 #include <sstream>
@@ -519,6 +523,84 @@ TEST_CASE("CHOLMOD simplicial solver traits: a supernodal factorization converte
   Eigen::MatrixXd x;
   REQUIRE(converted.solve(B.col(3), x));
   CHECK((x - X_simplicial.col(3)).norm() < 1e-10 * X_simplicial.col(3).norm());
+}
+
+TEMPLATE_TEST_CASE("CHOLMOD solver traits: a given fill-reducing ordering is used, and solves the same system",
+                   "[basis][solver]", CGAL::Cholmod_sparse_spd_solver_traits,
+                   CGAL::Cholmod_simplicial_sparse_spd_solver_traits)
+{
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(30));
+  const Eigen::SparseMatrix<double> A =
+      CGAL::cotangent_stiffness_matrix(mesh) + CGAL::lumped_mass_matrix(mesh);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(A.rows(), 3);
+  TestType solver;
+  std::vector<int> ordering = solver.fill_reducing_ordering(A);
+  REQUIRE(static_cast<Eigen::Index>(ordering.size()) == A.rows());
+  std::vector<int> sorted = ordering;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<int> identity(sorted.size());
+  std::iota(identity.begin(), identity.end(), 0);
+  CHECK(sorted == identity);
+
+  Eigen::MatrixXd expected, X;
+  REQUIRE(solver.factor(A));
+  const double own = solver.factor_nonzeros();
+  REQUIRE(solver.solve(B, expected));
+  // A random order fills the factor far more: proof that it was used.
+  std::vector<int> shuffled = identity;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(7));
+  solver.set_fill_reducing_ordering(shuffled);
+  REQUIRE(solver.factor(A));
+  CHECK(solver.factor_nonzeros() > 3 * own);
+  REQUIRE(solver.solve(B, X));
+  CHECK((X - expected).norm() < 1e-10 * expected.norm());
+  // The ordering is for one factorization only; one of another size is ignored.
+  REQUIRE(solver.factor(A));
+  CHECK(solver.factor_nonzeros() == own);
+  solver.set_fill_reducing_ordering({0, 1, 2});
+  REQUIRE(solver.factor(A));
+  CHECK(solver.factor_nonzeros() == own);
+  // CHOLMOD's own ordering handed back fills the factor as its own choice.
+  solver.set_fill_reducing_ordering(ordering);
+  REQUIRE(solver.factor(A));
+  CHECK(solver.factor_nonzeros() <= 1.05 * own);
+  REQUIRE(solver.solve(B, X));
+  CHECK((X - expected).norm() < 1e-10 * expected.norm());
+}
+
+TEST_CASE("Dirichlet systems: a later set of prescribed unknowns reuses one ordering and solves as a fresh system",
+          "[basis][solver]")
+{
+  using CGAL::Spectral_deformation::internal::Linear_algebra::Dirichlet_system;
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(30));
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
+  const Eigen::Index n = Q.rows();
+  const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(n, 3), values = Eigen::MatrixXd::Random(n, 3);
+  // Prescribed: the first tenth of the vertices, then the first and last tenths.
+  std::vector<char> first(static_cast<std::size_t>(n), 0), second(static_cast<std::size_t>(n), 0);
+  for(Eigen::Index i = 0; i < n / 10; ++i)
+  {
+    first[static_cast<std::size_t>(i)] = second[static_cast<std::size_t>(i)] = 1;
+    second[static_cast<std::size_t>(n - 1 - i)] = 1;
+  }
+  Dirichlet_system<CGAL::Cholmod_simplicial_sparse_spd_solver_traits> reused, fresh;
+  REQUIRE(reused.factor(Q, first));
+  REQUIRE(reused.factor(Q, second));
+  REQUIRE(fresh.factor(Q, second));
+  Eigen::MatrixXd x_reused, x_fresh;
+  REQUIRE(reused.solve(rhs, values, x_reused));
+  REQUIRE(fresh.solve(rhs, values, x_fresh));
+  CHECK((x_reused - x_fresh).norm() < 1e-9 * x_fresh.norm());
+  for(Eigen::Index i = 0; i < n; ++i)
+    if(second[static_cast<std::size_t>(i)])
+      CHECK(x_reused.row(i) == values.row(i));
+  // The free rows satisfy their equations.
+  const Eigen::MatrixXd residual = Q * x_reused - rhs;
+  double largest = 0;
+  for(Eigen::Index i = 0; i < n; ++i)
+    if(!second[static_cast<std::size_t>(i)])
+      largest = (std::max)(largest, residual.row(i).cwiseAbs().maxCoeff());
+  CHECK(largest < 1e-9 * rhs.cwiseAbs().maxCoeff());
 }
 
 TEST_CASE("CHOLMOD simplicial solver traits: solves split by subtrees agree with an independent solver",

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <exception>
+#include <utility>
 #include <vector>
 
 #ifdef _OPENMP
@@ -220,6 +221,31 @@ public:
   /// `Block_lanczos_eigensolver_traits::set_process_wide_tuning()`).
   void set_process_wide_tuning(bool enabled) { m_process_wide_tuning = enabled; }
 
+  /// The fill-reducing ordering CHOLMOD's analysis chooses for the pattern of
+  /// `A` (both triangles stored): entry k is the row eliminated k-th. Empty
+  /// when the analysis fails. The last factor is kept.
+  std::vector<int> fill_reducing_ordering(const Matrix& A)
+  {
+    if(A.rows() == 0 || A.nonZeros() == 0)
+      return {};
+    const Spectral_deformation::internal::Memory::Cholmod_huge_page_allocator huge_pages(
+        m_process_wide_tuning);
+    return m_solver.ordering_of(A);
+  }
+
+  /// Makes the next `factor()` analyze its matrix with `permutation` as the
+  /// fill-reducing ordering (entry k: the row eliminated k-th) instead of
+  /// choosing one: CHOLMOD's choice of an ordering is most of the cost of a
+  /// factorization of a large mesh's system, and one ordering of a whole
+  /// system serves all its principal submatrices. Ignored when its size is
+  /// not the size of the next matrix; if the analysis with it fails, CHOLMOD
+  /// chooses its own.
+  void set_fill_reducing_ordering(std::vector<int> permutation) { m_given_ordering = std::move(permutation); }
+
+  /// The entries of the last factor, as its analysis counted them (0 before
+  /// the first `factor()`).
+  double factor_nonzeros() const { return m_factor_nonzeros; }
+
   /// Factors the symmetric positive definite matrix `A` (both triangles
   /// stored). Returns `false` when the factorization fails.
   bool factor(const Matrix& A)
@@ -238,6 +264,9 @@ public:
     bool computed = false;
     if(Form == CHOLMOD_SIMPLICIAL_FACTOR)
       m_solver.cholmod().supernodal_switch = m_supernodal_switch;
+    std::vector<int> given;
+    given.swap(m_given_ordering);
+    std::vector<int>* ordering = static_cast<Eigen::Index>(given.size()) == A.rows() ? &given : nullptr;
 #ifdef _OPENMP
     // CHOLMOD's supernodal factorization runs some of its loops on
     // CHOLMOD_OMP_NUM_THREADS (4) threads whatever the machine. Where that
@@ -254,7 +283,7 @@ public:
         {
           try
           {
-            computed = m_solver.compute_checked(A);
+            computed = m_solver.compute_checked(A, ordering);
           }
           catch(...)
           {
@@ -267,8 +296,9 @@ public:
     }
     else
 #endif
-      computed = m_solver.compute_checked(A);
+      computed = m_solver.compute_checked(A, ordering);
     m_factored = computed;
+    m_factor_nonzeros = computed ? m_solver.cholmod().lnz : 0.0;
     m_subtree_solve = Spectral_deformation::internal::Linear_algebra::Two_subtree_triangular_solve();
     const cholmod_factor* L = m_factored ? m_solver.factor() : nullptr;
     if(Form == CHOLMOD_SIMPLICIAL_FACTOR && L != nullptr && !L->is_super && L->is_ll &&
@@ -329,14 +359,67 @@ private:
   {
     cholmod_factor* factor() const { return this->m_cholmodFactor; }
 
+    // Eigen's analyzePattern() with a given ordering (cholmod_analyze_p).
+    void analyze_with_ordering(const Matrix& A, std::vector<int>& ordering)
+    {
+      if(this->m_cholmodFactor != nullptr)
+      {
+        cholmod_free_factor(&this->m_cholmodFactor, &this->cholmod());
+        this->m_cholmodFactor = nullptr;
+      }
+      cholmod_sparse a = Eigen::viewAsCholmod(A.template selfadjointView<Eigen::Lower>());
+      cholmod_common& common = this->cholmod();
+      const int methods = common.nmethods, first_method = common.method[0].ordering;
+      const int postorder = common.postorder;
+      common.nmethods = 1;
+      common.method[0].ordering = CHOLMOD_GIVEN;
+      common.postorder = 1;
+      this->m_cholmodFactor = cholmod_analyze_p(&a, ordering.data(), nullptr, 0, &common);
+      common.nmethods = methods;
+      common.method[0].ordering = first_method;
+      common.postorder = postorder;
+      this->m_isInitialized = true;
+      this->m_info = Eigen::Success;
+      this->m_analysisIsOk = true;
+      this->m_factorizationIsOk = false;
+    }
+
+    // The ordering CHOLMOD's analysis chooses for the pattern of A, the
+    // current factor left as it is.
+    std::vector<int> ordering_of(const Matrix& A)
+    {
+      cholmod_sparse a = Eigen::viewAsCholmod(A.template selfadjointView<Eigen::Lower>());
+      cholmod_common& common = this->cholmod();
+      common.status = CHOLMOD_OK;
+      cholmod_factor* analysis = cholmod_analyze(&a, &common);
+      std::vector<int> ordering;
+      if(analysis != nullptr && common.status >= CHOLMOD_OK && analysis->Perm != nullptr)
+      {
+        const int* permutation = static_cast<const int*>(analysis->Perm);
+        ordering.assign(permutation, permutation + analysis->n);
+      }
+      if(analysis != nullptr)
+        cholmod_free_factor(&analysis, &common);
+      common.status = CHOLMOD_OK;
+      return ordering;
+    }
+
     // Eigen's compute() when every allocation succeeds. When CHOLMOD runs
     // out of memory, its analysis returns no factor, which Eigen's
     // factorize() then dereferences, and an interrupted factorization keeps
     // the "success" of its analysis: both are checked here.
-    bool compute_checked(const Matrix& A)
+    // With `ordering`, the analysis takes it as the fill-reducing ordering
+    // and falls back to CHOLMOD's own choice if that fails.
+    bool compute_checked(const Matrix& A, std::vector<int>* ordering = nullptr)
     {
       this->cholmod().status = CHOLMOD_OK;
-      this->analyzePattern(A);
+      if(ordering != nullptr)
+        analyze_with_ordering(A, *ordering);
+      if(ordering == nullptr || factor() == nullptr || this->cholmod().status < CHOLMOD_OK)
+      {
+        this->cholmod().status = CHOLMOD_OK;
+        this->analyzePattern(A);
+      }
       if(factor() == nullptr || this->cholmod().status < CHOLMOD_OK)
         return false;
       this->factorize(A);
@@ -442,6 +525,9 @@ private:
   mutable std::vector<double> m_rows;
   // Row k of the system is row m_factor_position[k] of the factor.
   std::vector<int> m_factor_position;
+  // The ordering of the next factor(), when one was given.
+  std::vector<int> m_given_ordering;
+  double m_factor_nonzeros = 0;
   bool m_factored = false;
   bool m_empty = false;
   bool m_process_wide_tuning = false;

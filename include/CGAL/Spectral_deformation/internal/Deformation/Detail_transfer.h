@@ -83,6 +83,8 @@ public:
     m_rotated_edges.initialize(m_stiffness, m_rest, smooth_rest);
 
     m_component = connected_components(detailed.triangles, m_rest.rows(), m_number_of_components);
+    m_soft.forget_matrix();
+    m_dirichlet.forget_matrix();
     m_soft_ready = false;
     m_dirichlet_ready = false;
   }

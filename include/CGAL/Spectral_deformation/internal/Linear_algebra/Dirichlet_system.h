@@ -13,6 +13,8 @@
 
 #include <Eigen/Sparse>
 
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -22,14 +24,38 @@ namespace Linear_algebra {
 
 using Memory::set_process_wide_tuning_if_supported;
 
+/// Whether a sparse solver can report a fill-reducing ordering of a matrix
+/// and take one for its next factorization (`Cholmod_llt_solver_traits`).
+template <class Solver, class = void>
+struct Takes_fill_reducing_ordering : std::false_type
+{
+};
+template <class Solver>
+struct Takes_fill_reducing_ordering<
+    Solver, std::void_t<decltype(std::declval<Solver&>().fill_reducing_ordering(
+                            std::declval<const Eigen::SparseMatrix<double>&>())),
+                        decltype(std::declval<Solver&>().set_fill_reducing_ordering(std::vector<int>()))>>
+  : std::true_type
+{
+};
+
 /// A symmetric positive semi-definite system A X = B in which some unknowns
 /// are prescribed: A is restricted to the free unknowns and factored once,
 /// the prescribed values enter the right-hand side.
+///
+/// When the solver takes a fill-reducing ordering, the second and later
+/// factorizations of the same matrix (until `forget_matrix()`) reuse one
+/// ordering of the whole matrix, restricted to the free unknowns, instead
+/// of choosing a new one for each free block: on a large mesh, choosing
+/// the ordering costs several times the numeric factorization. The first
+/// factorization keeps the solver's own choice, so that a single set of
+/// prescribed unknowns costs no more than before.
 template <class SparseSPDSolverTraits>
 class Dirichlet_system
 {
 public:
-  /// Factors the free block of `A`; `prescribed[i]` flags unknown i.
+  /// Factors the free block of `A`; `prescribed[i]` flags unknown i. Later
+  /// calls must pass the same `A` until `forget_matrix()`.
   bool factor(const Eigen::SparseMatrix<double>& A, const std::vector<char>& prescribed)
   {
     const Eigen::Index n = A.rows();
@@ -59,7 +85,34 @@ public:
     free_block.setFromTriplets(inner.begin(), inner.end());
     m_coupling.resize(m, n);
     m_coupling.setFromTriplets(outer.begin(), outer.end());
-    return m == 0 || m_solver.factor(free_block);
+    if(m == 0)
+      return true;
+    if constexpr(Takes_fill_reducing_ordering<SparseSPDSolverTraits>::value)
+    {
+      if(m_factorizations > 0)
+      {
+        if(m_whole_ordering.empty())
+          m_whole_ordering = m_solver.fill_reducing_ordering(A);
+        if(static_cast<Eigen::Index>(m_whole_ordering.size()) == n)
+        {
+          std::vector<int> restricted;
+          restricted.reserve(static_cast<std::size_t>(m));
+          for(int i : m_whole_ordering)
+            if(m_free_index[static_cast<std::size_t>(i)] >= 0)
+              restricted.push_back(m_free_index[static_cast<std::size_t>(i)]);
+          m_solver.set_fill_reducing_ordering(std::move(restricted));
+        }
+      }
+      ++m_factorizations;
+    }
+    return m_solver.factor(free_block);
+  }
+
+  /// The next `factor()` may pass another matrix.
+  void forget_matrix()
+  {
+    m_whole_ordering.clear();
+    m_factorizations = 0;
   }
 
   /// Solves with the right-hand side `rhs` (n×d) and the values of the
@@ -99,6 +152,9 @@ public:
 
 private:
   SparseSPDSolverTraits m_solver;
+  // One ordering of the whole matrix, and how many free blocks of it were factored.
+  std::vector<int> m_whole_ordering;
+  int m_factorizations = 0;
   std::vector<int> m_free;
   std::vector<int> m_free_index;
   Eigen::SparseMatrix<double> m_coupling;
