@@ -560,6 +560,17 @@ TEMPLATE_TEST_CASE("CHOLMOD solver traits: a given fill-reducing ordering is use
   solver.set_fill_reducing_ordering({0, 1, 2});
   REQUIRE(solver.factor(A));
   CHECK(solver.factor_nonzeros() == own);
+  // So is one of the right size that is not a permutation.
+  std::vector<int> repeated = shuffled;
+  repeated[1] = repeated[0];
+  solver.set_fill_reducing_ordering(repeated);
+  REQUIRE(solver.factor(A));
+  CHECK(solver.factor_nonzeros() == own);
+  std::vector<int> out_of_range = shuffled;
+  out_of_range[0] = static_cast<int>(A.rows());
+  solver.set_fill_reducing_ordering(out_of_range);
+  REQUIRE(solver.factor(A));
+  CHECK(solver.factor_nonzeros() == own);
   // CHOLMOD's own ordering handed back fills the factor as its own choice.
   solver.set_fill_reducing_ordering(ordering);
   REQUIRE(solver.factor(A));

@@ -237,9 +237,9 @@ public:
   /// fill-reducing ordering (entry k: the row eliminated k-th) instead of
   /// choosing one: CHOLMOD's choice of an ordering is most of the cost of a
   /// factorization of a large mesh's system, and one ordering of a whole
-  /// system serves all its principal submatrices. Ignored when its size is
-  /// not the size of the next matrix; if the analysis with it fails, CHOLMOD
-  /// chooses its own.
+  /// system serves all its principal submatrices. Ignored when it is not a
+  /// permutation of the rows of the next matrix; if the analysis with it
+  /// fails, CHOLMOD chooses its own.
   void set_fill_reducing_ordering(std::vector<int> permutation) { m_given_ordering = std::move(permutation); }
 
   /// The entries of the last factor, as its analysis counted them (0 before
@@ -266,7 +266,7 @@ public:
       m_solver.cholmod().supernodal_switch = m_supernodal_switch;
     std::vector<int> given;
     given.swap(m_given_ordering);
-    std::vector<int>* ordering = static_cast<Eigen::Index>(given.size()) == A.rows() ? &given : nullptr;
+    std::vector<int>* ordering = is_permutation_of_rows(given, A.rows()) ? &given : nullptr;
 #ifdef _OPENMP
     // CHOLMOD's supernodal factorization runs some of its loops on
     // CHOLMOD_OMP_NUM_THREADS (4) threads whatever the machine. Where that
@@ -354,6 +354,20 @@ public:
   }
 
 private:
+  static bool is_permutation_of_rows(const std::vector<int>& ordering, Eigen::Index rows)
+  {
+    if(static_cast<Eigen::Index>(ordering.size()) != rows)
+      return false;
+    std::vector<char> seen(ordering.size(), 0);
+    for(int i : ordering)
+    {
+      if(i < 0 || i >= rows || seen[static_cast<std::size_t>(i)])
+        return false;
+      seen[static_cast<std::size_t>(i)] = 1;
+    }
+    return true;
+  }
+
   // Eigen keeps the factor protected; CHOLMOD's own solve needs it.
   struct Factorization : Eigen::CholmodDecomposition<Matrix, Eigen::Lower>
   {
