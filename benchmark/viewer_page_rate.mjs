@@ -10,19 +10,10 @@
 // Prints one JSON object.
 //
 //   node viewer_page_rate.mjs URL NODE_PACKAGES_DIR ROUNDS SECONDS
-import { createRequire } from 'node:module';
-import path from 'node:path';
+import { launchChromium } from '../tools/ssmd_viewer/test/headless_chromium.mjs';
 
 const [url, packages, rounds = '5', seconds = '4'] = process.argv.slice(2);
-const require = createRequire(path.resolve(packages, 'package.json'));
-const puppeteer = require('puppeteer-core');
-
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--no-sandbox', '--headless=new', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-         '--window-size=1200,800'],
-  defaultViewport: { width: 1200, height: 800 },
-});
+const browser = await launchChromium(packages);
 try {
   const page = await browser.newPage();
   await page.goto(url, { waitUntil: 'load' });

@@ -9,12 +9,9 @@
 // the updates per second while the handle moves, and saves a screenshot.
 //
 //   node check_page.mjs URL NODE_PACKAGES_DIR SCREENSHOT.png
-import { createRequire } from 'node:module';
-import path from 'node:path';
+import { launchChromium, VIEWPORT } from './headless_chromium.mjs';
 
 const [url, packages, screenshot] = process.argv.slice(2);
-const require = createRequire(path.resolve(packages, 'package.json'));
-const puppeteer = require('puppeteer-core');
 
 const failures = [];
 function check(condition, what) {
@@ -22,13 +19,7 @@ function check(condition, what) {
   if (!condition) failures.push(what);
 }
 
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  // WebGL without a GPU: SwiftShader, which Chromium only enables when asked.
-  args: ['--no-sandbox', '--headless=new', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-         '--window-size=1200,800'],
-  defaultViewport: { width: 1200, height: 800 },
-});
+const browser = await launchChromium(packages);
 try {
   const page = await browser.newPage();
   const errors = [];
@@ -41,7 +32,7 @@ try {
   // In the default view the armadillo faces the camera: its raised right arm
   // (on the left of the picture) is selected by boxes in normalized device
   // coordinates.
-  const toPixels = (x, y) => [(x + 1) / 2 * 1200, (1 - y) / 2 * 800];
+  const toPixels = (x, y) => [(x + 1) / 2 * VIEWPORT.width, (1 - y) / 2 * VIEWPORT.height];
   const flags = () => page.evaluate(() => ['roi', 'fixed', 'handle'].map((m) => window.ssmdViewer.selected(m)));
   const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
   const undoSteps = () => page.evaluate(() => window.ssmdViewer.selectionUndoSteps());

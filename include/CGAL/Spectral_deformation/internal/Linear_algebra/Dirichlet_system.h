@@ -89,7 +89,7 @@ public:
       return true;
     if constexpr(Takes_fill_reducing_ordering<SparseSPDSolverTraits>::value)
     {
-      if(m_factorizations > 0)
+      if(m_factored_before)
       {
         if(m_whole_ordering.empty())
           m_whole_ordering = m_solver.fill_reducing_ordering(A);
@@ -103,7 +103,7 @@ public:
           m_solver.set_fill_reducing_ordering(std::move(restricted));
         }
       }
-      ++m_factorizations;
+      m_factored_before = true;
     }
     return m_solver.factor(free_block);
   }
@@ -112,7 +112,7 @@ public:
   void forget_matrix()
   {
     m_whole_ordering.clear();
-    m_factorizations = 0;
+    m_factored_before = false;
   }
 
   /// Solves with the right-hand side `rhs` (n×d) and the values of the
@@ -152,9 +152,9 @@ public:
 
 private:
   SparseSPDSolverTraits m_solver;
-  // One ordering of the whole matrix, and how many free blocks of it were factored.
+  // One ordering of the whole matrix, and whether a free block of it was factored.
   std::vector<int> m_whole_ordering;
-  int m_factorizations = 0;
+  bool m_factored_before = false;
   std::vector<int> m_free;
   std::vector<int> m_free_index;
   Eigen::SparseMatrix<double> m_coupling;
