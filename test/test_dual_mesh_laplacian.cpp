@@ -182,6 +182,7 @@ TEST_CASE("non-manifold and inconsistently oriented faces are refused", "[dual][
 TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's products", "[dual]")
 {
   using namespace CGAL::Spectral_deformation::internal::Mesh;
+  using CGAL::Spectral_deformation::internal::Linear_algebra::Basis_columns;
   using CGAL::Spectral_deformation::internal::Linear_algebra::Basis_panels;
   // A plane with an open border: rows only where a face has three neighbours.
   const Soup soup = bumpy_plane(12);
@@ -217,6 +218,17 @@ TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's
   panels.multiply_transpose(X, projected);
   CHECK((shape - H * C).cwiseAbs().maxCoeff() < 1e-13);
   CHECK((projected - H.transpose() * X).cwiseAbs().maxCoeff() < 1e-12);
+
+  // The basis read in place, by blocks larger than the panels: rows past
+  // several whole blocks and a partial one.
+  const Eigen::MatrixXd tall = Eigen::MatrixXd::Random(5 * 512 + 77, 23);
+  const Positions tall_X = Positions::Random(tall.rows(), 3);
+  const Basis_columns columns(tall);
+  columns.multiply(C, shape);
+  columns.multiply_transpose(tall_X, projected);
+  CHECK(shape.rows() == tall.rows());
+  CHECK((shape - tall * C).cwiseAbs().maxCoeff() < 1e-13);
+  CHECK((projected - tall.transpose() * tall_X).cwiseAbs().maxCoeff() < 1e-11);
 
   // Float storage: exact products of the rounded basis, in double arithmetic.
   const Eigen::MatrixXd rounded = H.cast<float>().cast<double>();

@@ -95,15 +95,17 @@ public:
     m_computation.eigensolver() = traits;
   }
 
-  /// Whether `deform()` reads its copy of the basis in single precision
-  /// (default `false`).
+  /// Whether `deform()` reads a float copy of the basis (default `false`).
+  /// \deprecated See `set_single_precision_basis()`.
   bool single_precision_basis() const { return m_computation.settings().single_precision_basis; }
-  /// Stores the copy of the basis that every iteration of `deform()` reads
-  /// in float (4 n m bytes instead of 8 n m); the arithmetic stays in double.
-  /// Not the default: the reduced systems amplify the rounding of the copy,
-  /// and results move by about \f$ 10^{-4} \f$ of the bounding-box diagonal
-  /// (see the manual's Performance section). Takes effect at once, the
-  /// basis is kept.
+  /// Makes every iteration of `deform()` read a float copy of the basis
+  /// (4 n m more bytes); the arithmetic stays in double. The reduced systems
+  /// amplify the rounding of the copy: results move by about
+  /// \f$ 10^{-4} \f$ of the bounding-box diagonal. Takes effect at once,
+  /// the basis is kept.
+  /// \deprecated The iteration reads the basis itself, without a double
+  /// copy, so the float copy no longer saves memory and is not faster; it
+  /// will be removed in a later version.
   void set_single_precision_basis(bool single)
   {
     static_assert(is_spectral, "set_single_precision_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");

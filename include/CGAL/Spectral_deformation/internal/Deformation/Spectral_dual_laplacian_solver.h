@@ -31,6 +31,7 @@ namespace Spectral_deformation {
 namespace internal {
 namespace Deformation {
 
+using Linear_algebra::Basis_columns;
 using Linear_algebra::Basis_panels;
 using Mesh::Dual_coordinates;
 using Mesh::Dual_mesh_operator;
@@ -80,7 +81,6 @@ private:
                   const Eigen::SparseMatrix<double>* stiffness)
   {
     m_basis = &basis;
-    // The iteration reads its own copy of the basis, laid out for it.
     assign_panels();
     m_mass = mass;
     m_dual = Dual_mesh_operator(rest.triangles, rest.number_of_vertices());
@@ -159,7 +159,7 @@ public:
       build_patches();
   }
 
-  /// Whether the iteration's copy of the basis is stored in float (the
+  /// Whether the iteration reads a float copy of the basis (the
   /// arithmetic stays in double). The reduced systems amplify the rounding of
   /// the copy: the result moved by about 1e-4 of the bounding-box diagonal
   /// from the double one (armadillo arm, 104k vertices), which is why it is
@@ -358,18 +358,15 @@ private:
     return report.stop_after(iteration, step, tolerance);
   }
 
+  // In double the iteration reads the basis itself; in single precision its
+  // own float copy.
   void assign_panels()
   {
+    m_columns.assign(*m_basis);
     if(m_single_precision)
-    {
-      m_panels = Basis_panels<double>();
       m_float_panels.assign(*m_basis);
-    }
     else
-    {
       m_float_panels = Basis_panels<float>();
-      m_panels.assign(*m_basis);
-    }
   }
 
   void multiply(const Eigen::MatrixXd& coefficients, Positions& shape) const
@@ -377,7 +374,7 @@ private:
     if(m_single_precision)
       m_float_panels.multiply(coefficients, shape);
     else
-      m_panels.multiply(coefficients, shape);
+      m_columns.multiply(coefficients, shape);
   }
 
   template <class Values>
@@ -386,7 +383,7 @@ private:
     if(m_single_precision)
       m_float_panels.multiply_transpose(values, result);
     else
-      m_panels.multiply_transpose(values, result);
+      m_columns.multiply_transpose(values, result);
   }
 
   // Buffers of the iteration, kept between calls: the first touch of fresh
@@ -401,7 +398,7 @@ private:
   bool uses_arap_energy() const { return m_energy != DUAL_LAPLACIAN_ENERGY; }
 
   const Eigen::MatrixXd* m_basis = nullptr;
-  Basis_panels<double> m_panels;
+  Basis_columns m_columns;
   Basis_panels<float> m_float_panels;
   bool m_single_precision = false;
 

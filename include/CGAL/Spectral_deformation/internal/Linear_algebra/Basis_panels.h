@@ -22,25 +22,170 @@ namespace Spectral_deformation {
 namespace internal {
 namespace Linear_algebra {
 
-/// A copy of a basis H (n×m) laid out for the two products of every
-/// iteration, S = H C and Hᵀ X with three columns: the rows are cut into
-/// panels of `panel_rows` rows, each panel stored by columns in one
-/// contiguous block. Both products then stream through H once, in memory
-/// order, with a panel of S or X in the first-level cache. Eigen's general
-/// products pack H into blocks first, which costs about as much as the
-/// product itself when the other factor has three columns. The panels are
-/// shared by the threads of an OpenMP team when the code is compiled with
-/// OpenMP.
-///
-/// `Scalar` is the storage type (`double`, or `float` to halve the memory
-/// traffic). The arithmetic is in double whatever the storage: the
-/// right-hand sides of the iteration are sums with heavy cancellation (L̂F
-/// annihilates the constants), which float accumulation would spoil.
+// The two products of every iteration with a basis H (n×m), S = H C and
+// Hᵀ X, both with three columns, by blocks of rows: a block of S or X stays
+// in the first-level cache while the block of H streams through once.
+// Eigen's general products pack H into blocks first, which costs about as
+// much as the product itself when the other factor has three columns.
+// `block_of(start, rows)` gives the rows [start, start + rows) of H; the
+// blocks are shared by the threads of an OpenMP team when the code is
+// compiled with OpenMP. A float block is widened to double: the arithmetic
+// is in double whatever the storage, since the right-hand sides of the
+// iteration are sums with heavy cancellation (L̂F annihilates the
+// constants), which float accumulation would spoil.
+namespace row_blocks {
+
+typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Columns3;
+
+// A float column is widened once into `buffer` rather than inside every
+// expression that reads it: Eigen re-evaluates a lazy cast at each use.
+template <typename Column, typename Buffer>
+auto in_double(const Column& column, Buffer& buffer)
+{
+  if constexpr(std::is_same<typename Column::Scalar, double>::value)
+  {
+    (void)buffer;
+    return column;
+  }
+  else
+  {
+    buffer.head(column.rows()) = column.template cast<double>();
+    return buffer.head(column.rows());
+  }
+}
+
+template <Eigen::Index BlockRows, typename BlockOf, typename Coefficients>
+void multiply(Eigen::Index n, Eigen::Index m, const BlockOf& block_of, const Coefficients& coefficients,
+              Columns3& shape)
+{
+  shape.resize(n, 3);
+  const Eigen::Matrix<double, Eigen::Dynamic, 3> c = coefficients;
+  const long long blocks = (n + BlockRows - 1) / BlockRows;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) if(n * m > 100000)
+#endif
+  for(long long b = 0; b < blocks; ++b)
+  {
+    const Eigen::Index start = static_cast<Eigen::Index>(b) * BlockRows;
+    const auto h = block_of(start, (std::min)(BlockRows, n - start));
+    Eigen::Matrix<double, BlockRows, 3> block;
+    auto s = block.topRows(h.rows());
+    s.setZero();
+    // Column updates (axpy) rather than row dot products: no horizontal
+    // reduction per row, and each column of the block is read in order.
+    Eigen::Matrix<double, BlockRows, 1> widened;
+    for(Eigen::Index k = 0; k < m; ++k)
+    {
+      const auto column = in_double(h.col(k), widened);
+      s.col(0) += c(k, 0) * column;
+      s.col(1) += c(k, 1) * column;
+      s.col(2) += c(k, 2) * column;
+    }
+    shape.middleRows(start, h.rows()) = s;
+  }
+}
+
+// Each thread sums its own contiguous range of blocks and the partial sums
+// are added in thread order, so that a given number of threads always gives
+// the same result.
+template <Eigen::Index BlockRows, typename BlockOf, typename Values>
+void multiply_transpose(Eigen::Index n, Eigen::Index m, const BlockOf& block_of, const Values& values,
+                        Eigen::MatrixXd& result)
+{
+  const long long blocks = (n + BlockRows - 1) / BlockRows;
+  std::vector<Eigen::MatrixXd> partial(1);
+#ifdef _OPENMP
+#pragma omp parallel if(n * m > 100000)
+#endif
+  {
+    int thread = 0;
+#ifdef _OPENMP
+#pragma omp single
+    partial.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    thread = omp_get_thread_num();
+#endif
+    Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(m, 3);
+    Eigen::Matrix<double, Eigen::Dynamic, 3> block_sum(m, 3);
+    Eigen::Matrix<double, BlockRows, 3> block;
+    Eigen::Matrix<double, BlockRows, 1> widened;
+#ifdef _OPENMP
+#pragma omp for schedule(static)
+#endif
+    for(long long b = 0; b < blocks; ++b)
+    {
+      const Eigen::Index start = static_cast<Eigen::Index>(b) * BlockRows;
+      const auto h = block_of(start, (std::min)(BlockRows, n - start));
+      auto x = block.topRows(h.rows());
+      x = values.middleRows(start, h.rows());
+      if constexpr(std::is_same<typename std::decay_t<decltype(h)>::Scalar, double>::value)
+        block_sum.noalias() = h.transpose().lazyProduct(x);
+      else
+        for(Eigen::Index k = 0; k < m; ++k)
+          block_sum.row(k).noalias() = in_double(h.col(k), widened).transpose().lazyProduct(x);
+      sum += block_sum;
+    }
+    partial[static_cast<std::size_t>(thread)].swap(sum);
+  }
+  result.setZero(m, 3);
+  for(const Eigen::MatrixXd& sum : partial)
+    if(sum.size() != 0)
+      result += sum;
+}
+
+} // namespace row_blocks
+
+/// The two products of the iteration read straight from a column-major
+/// basis H, which is not copied: the caller keeps H alive and unchanged.
+/// Blocks of a few hundred rows make each of the m column pieces of a block
+/// long enough for the hardware prefetcher, so that this layout streams
+/// about as fast as a copy stored by panels (`Basis_panels`), without the
+/// copy's 8nm bytes.
+class Basis_columns
+{
+public:
+  typedef row_blocks::Columns3 Columns3;
+
+  Basis_columns() = default;
+  explicit Basis_columns(const Eigen::MatrixXd& basis) { assign(basis); }
+
+  void assign(const Eigen::MatrixXd& basis) { m_basis = &basis; }
+
+  Eigen::Index rows() const { return m_basis == nullptr ? 0 : m_basis->rows(); }
+  Eigen::Index cols() const { return m_basis == nullptr ? 0 : m_basis->cols(); }
+
+  /// `shape` = H `coefficients` (n×3), `coefficients` m×3; `shape` must not
+  /// alias `coefficients`.
+  template <typename Coefficients>
+  void multiply(const Coefficients& coefficients, Columns3& shape) const
+  {
+    row_blocks::multiply<512>(rows(), cols(), block_of(), coefficients, shape);
+  }
+
+  /// `result` = Hᵀ `values` (m×3), `values` n×3.
+  template <typename Values>
+  void multiply_transpose(const Values& values, Eigen::MatrixXd& result) const
+  {
+    row_blocks::multiply_transpose<128>(rows(), cols(), block_of(), values, result);
+  }
+
+private:
+  auto block_of() const
+  {
+    return [this](Eigen::Index start, Eigen::Index count) { return m_basis->middleRows(start, count); };
+  }
+
+  const Eigen::MatrixXd* m_basis = nullptr;
+};
+
+/// A copy of a basis H (n×m) for the same two products, cut into panels of
+/// `panel_rows` rows, each panel stored by columns in one contiguous block.
+/// `Scalar` is the storage type: `float` halves the memory and the traffic
+/// of the copy (the arithmetic stays in double).
 template <typename Scalar>
 class Basis_panels
 {
 public:
-  typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Columns3;
+  typedef row_blocks::Columns3 Columns3;
   static constexpr Eigen::Index panel_rows = 128;
 
   Basis_panels() = default;
@@ -65,98 +210,22 @@ public:
   template <typename Coefficients>
   void multiply(const Coefficients& coefficients, Columns3& shape) const
   {
-    shape.resize(m_rows, 3);
-    const Eigen::Matrix<double, Eigen::Dynamic, 3> c = coefficients;
-    const long long panels = number_of_panels();
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(m_rows * m_cols > 100000)
-#endif
-    for(long long p = 0; p < panels; ++p)
-    {
-      const Eigen::Index start = static_cast<Eigen::Index>(p) * panel_rows;
-      const auto h = panel(start);
-      Eigen::Matrix<double, panel_rows, 3> block;
-      auto s = block.topRows(h.rows());
-      s.setZero();
-      // Column updates (axpy) rather than row dot products: no horizontal
-      // reduction per row, and the panel is read once in memory order.
-      Eigen::Matrix<double, panel_rows, 1> widened;
-      for(Eigen::Index k = 0; k < m_cols; ++k)
-      {
-        const auto column = in_double(h.col(k), widened);
-        s.col(0) += c(k, 0) * column;
-        s.col(1) += c(k, 1) * column;
-        s.col(2) += c(k, 2) * column;
-      }
-      shape.middleRows(start, h.rows()) = s;
-    }
+    row_blocks::multiply<panel_rows>(m_rows, m_cols, block_of(), coefficients, shape);
   }
 
-  /// `result` = Hᵀ `values` (m×3), `values` n×3. Each thread sums its own
-  /// contiguous range of panels and the partial sums are added in thread
-  /// order, so that a given number of threads always gives the same result.
+  /// `result` = Hᵀ `values` (m×3), `values` n×3.
   template <typename Values>
   void multiply_transpose(const Values& values, Eigen::MatrixXd& result) const
   {
-    const long long panels = number_of_panels();
-    std::vector<Eigen::MatrixXd> partial(1);
-#ifdef _OPENMP
-#pragma omp parallel if(m_rows * m_cols > 100000)
-#endif
-    {
-      int thread = 0;
-#ifdef _OPENMP
-#pragma omp single
-      partial.resize(static_cast<std::size_t>(omp_get_num_threads()));
-      thread = omp_get_thread_num();
-#endif
-      Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(m_cols, 3);
-      Eigen::Matrix<double, Eigen::Dynamic, 3> panel_sum(m_cols, 3);
-      Eigen::Matrix<double, panel_rows, 3> block;
-      Eigen::Matrix<double, panel_rows, 1> widened;
-#ifdef _OPENMP
-#pragma omp for schedule(static)
-#endif
-      for(long long p = 0; p < panels; ++p)
-      {
-        const Eigen::Index start = static_cast<Eigen::Index>(p) * panel_rows;
-        const auto h = panel(start);
-        auto x = block.topRows(h.rows());
-        x = values.middleRows(start, h.rows());
-        if constexpr(std::is_same<Scalar, double>::value)
-          panel_sum.noalias() = h.transpose().lazyProduct(x);
-        else
-          for(Eigen::Index k = 0; k < m_cols; ++k)
-            panel_sum.row(k).noalias() = in_double(h.col(k), widened).transpose().lazyProduct(x);
-        sum += panel_sum;
-      }
-      partial[static_cast<std::size_t>(thread)].swap(sum);
-    }
-    result.setZero(m_cols, 3);
-    for(const Eigen::MatrixXd& sum : partial)
-      if(sum.size() != 0)
-        result += sum;
+    row_blocks::multiply_transpose<panel_rows>(m_rows, m_cols, block_of(), values, result);
   }
 
 private:
-  // A float column is widened once into `buffer` rather than inside every
-  // expression that reads it: Eigen re-evaluates a lazy cast at each use.
-  template <typename Column>
-  static auto in_double(const Column& column, Eigen::Matrix<double, panel_rows, 1>& buffer)
+  auto block_of() const
   {
-    if constexpr(std::is_same<Scalar, double>::value)
-    {
-      (void)buffer;
-      return column;
-    }
-    else
-    {
-      buffer.head(column.rows()) = column.template cast<double>();
-      return buffer.head(column.rows());
-    }
+    return [this](Eigen::Index start, Eigen::Index) { return panel(start); };
   }
 
-  long long number_of_panels() const { return (m_rows + panel_rows - 1) / panel_rows; }
   Eigen::Index panel_height(Eigen::Index start) const { return (std::min)(panel_rows, m_rows - start); }
 
   Eigen::Map<Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>> panel(Eigen::Index start)
