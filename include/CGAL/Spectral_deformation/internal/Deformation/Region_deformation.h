@@ -9,6 +9,7 @@
 
 #include <CGAL/Spectral_deformation/Deformation_reports.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_deformation/internal/Basis/basis_in_region_order.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
@@ -166,8 +167,15 @@ public:
   void load_basis(std::istream& is, const VertexSelection& selection)
   {
     Basis_data data = Basis::read_basis(is);
-    Basis::check_basis_matches(data, extract_region(selection).arrays);
-    m_supplied_basis = std::move(data);
+    const Mesh::Region<vertex_descriptor> region = extract_region(selection);
+    const Basis::Basis_match match = Basis::basis_match(data, region);
+    if(match == Basis::Basis_match::NONE)
+    {
+      // Throws with the sizes, or the fingerprint, that differ.
+      Basis::check_basis_matches(data, region.arrays);
+      throw Error(Error::MESH_MISMATCH, "load: the basis was computed on a different mesh");
+    }
+    m_supplied_basis = Basis::in_region_order(data, region, match);
     drop_region();
   }
 
@@ -243,8 +251,8 @@ private:
     return false;
   }
 
-  // The faces incident to ROI vertices, with local vertex indices in the
-  // order of the vertex index map; validated.
+  // The faces incident to ROI vertices, with local vertex indices along the
+  // surface (Mesh::extract_region()); validated.
   static Mesh::Region<vertex_descriptor> extract_region(const VertexSelection& selection)
   {
     return Mesh::extract_region(

@@ -40,21 +40,10 @@ public:
                   const Positions& rotation_rest)
   {
     m_rotations.initialize(stiffness, rotation_rest);
-    // Σ_j w_ij ½ R_i (v_i − v_j) = R_i b_i: the half of the right-hand side
-    // that turns with the vertex's own rotation is one product per vertex.
-    // The other half turns with the neighbour's rotation: the weighted rest
-    // edges ½ w_ij (v_i − v_j) are stored in the order of the adjacency.
-    const Cotangent_adjacency& a = m_rotations.adjacency();
-    const Eigen::Index n = edge_rest.rows();
-    m_own_half.setZero(3, n);
-    m_half_edges.resize(3, static_cast<Eigen::Index>(a.neighbours.size()));
-    for(Eigen::Index i = 0; i < n; ++i)
-      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
-      {
-        m_half_edges.col(s) = (0.5 * a.weights[static_cast<std::size_t>(s)]) *
-                              (edge_rest.row(i) - edge_rest.row(a.neighbours[static_cast<std::size_t>(s)])).transpose();
-        m_own_half.col(i) += m_half_edges.col(s);
-      }
+    // The weighted rest edges ½ w_ij (v_i − v_j) are formed at each
+    // evaluation from the positions, one vertex per cache line, rather than
+    // stored per edge (six times the memory, and as long to stream).
+    m_edge_rest_vertex_major = edge_rest.transpose();
   }
 
   const Smooth_rotation_field& rotation_field() const { return m_rotations; }
@@ -66,7 +55,7 @@ public:
     m_rotations.compute(smooth_deformed, m_rotation_workspace);
     const std::vector<Eigen::Matrix3d>& R = m_rotation_workspace;
     const Cotangent_adjacency& a = m_rotations.adjacency();
-    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_own_half.cols());
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_edge_rest_vertex_major.cols());
     Eigen::MatrixXd& rhs = m_right_hand_side;
     rhs.resize(n, 3);
 #ifdef _OPENMP
@@ -74,18 +63,32 @@ public:
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
     {
-      Eigen::Vector3d sum = R[static_cast<std::size_t>(i)] * m_own_half.col(i);
-      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
-        sum.noalias() += R[static_cast<std::size_t>(a.neighbours[static_cast<std::size_t>(s)])] * m_half_edges.col(s);
+      // Σ_j ½ w_ij R_i (v_i − v_j) = R_i Σ_j ½ w_ij (v_i − v_j): the half that
+      // turns with the vertex's own rotation is one product; the other half
+      // turns with each neighbour's rotation.
+      const int begin = a.start[static_cast<std::size_t>(i)], end = a.start[static_cast<std::size_t>(i) + 1];
+      const Eigen::Vector3d vi = m_edge_rest_vertex_major.col(i);
+      Eigen::Vector3d own_half = Eigen::Vector3d::Zero();
+      for(int s = begin; s < end; ++s)
+        own_half += half_edge(a, s, vi);
+      Eigen::Vector3d sum = R[static_cast<std::size_t>(i)] * own_half;
+      for(int s = begin; s < end; ++s)
+        sum.noalias() += R[static_cast<std::size_t>(a.neighbours[static_cast<std::size_t>(s)])] * half_edge(a, s, vi);
       rhs.row(i) = sum.transpose();
     }
     return rhs;
   }
 
 private:
+  // ½ w_ij (v_i − v_j) for the edge s of the adjacency, j its neighbour.
+  Eigen::Vector3d half_edge(const Cotangent_adjacency& a, int s, const Eigen::Vector3d& vi) const
+  {
+    return (0.5 * a.weights[static_cast<std::size_t>(s)]) *
+           (vi - m_edge_rest_vertex_major.col(a.neighbours[static_cast<std::size_t>(s)]));
+  }
+
   Smooth_rotation_field m_rotations;
-  // Per vertex Σ_j ½ w_ij (v_i − v_j), per edge of the adjacency ½ w_ij (v_i − v_j).
-  Eigen::Matrix<double, 3, Eigen::Dynamic> m_own_half, m_half_edges;
+  Smooth_rotation_field::Vertex_major_positions m_edge_rest_vertex_major; // v
   // Buffers of an evaluation, kept between calls: on large meshes, fresh
   // pages for them cost more than the arithmetic.
   mutable std::vector<Eigen::Matrix3d> m_rotation_workspace;

@@ -95,16 +95,10 @@ public:
   {
     m_adjacency.initialize(stiffness);
     const Eigen::Index n = smooth_rest.rows();
-    // The weighted rest edges are read in the order of the adjacency, one
-    // after the other, instead of gathering two rows of the rest positions
-    // per edge.
-    const Cotangent_adjacency& a = m_adjacency;
-    m_weighted_rest_edges.resize(3, static_cast<Eigen::Index>(a.neighbours.size()));
-    for(Eigen::Index i = 0; i < n; ++i)
-      for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
-        m_weighted_rest_edges.col(s) =
-            std::abs(a.weights[static_cast<std::size_t>(s)]) *
-            (smooth_rest.row(a.neighbours[static_cast<std::size_t>(s)]) - smooth_rest.row(i)).transpose();
+    // A vertex's three coordinates in one cache line: the rest edges are
+    // formed from them at each evaluation rather than stored per edge, which
+    // would take six times the memory and as long to stream.
+    m_rest_vertex_major = smooth_rest.transpose();
     std::vector<Eigen::Matrix3d> moments;
     accumulate(smooth_rest, moments);
     std::vector<char> determined(static_cast<std::size_t>(n), 0);
@@ -200,10 +194,14 @@ private:
     const Cotangent_adjacency& a = m_adjacency;
     Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
     const Eigen::Vector3d xi = x.col(i);
+    const Eigen::Vector3d si = m_rest_vertex_major.col(i);
     for(int s = a.start[static_cast<std::size_t>(i)]; s < a.start[static_cast<std::size_t>(i) + 1]; ++s)
     {
-      const Eigen::Vector3d d = x.col(a.neighbours[static_cast<std::size_t>(s)]) - xi;
-      c.noalias() += d * m_weighted_rest_edges.col(s).transpose();
+      const int j = a.neighbours[static_cast<std::size_t>(s)];
+      const Eigen::Vector3d d = x.col(j) - xi;
+      const Eigen::Vector3d weighted_rest_edge =
+          std::abs(a.weights[static_cast<std::size_t>(s)]) * (m_rest_vertex_major.col(j) - si);
+      c.noalias() += d * weighted_rest_edge.transpose();
     }
     return c;
   }
@@ -256,8 +254,7 @@ private:
   }
 
   Cotangent_adjacency m_adjacency;
-  // Per edge of the adjacency, |w_ij| (s_j − s_i).
-  Eigen::Matrix<double, 3, Eigen::Dynamic> m_weighted_rest_edges;
+  Vertex_major_positions m_rest_vertex_major; // s
   mutable Vertex_major_positions m_vertex_major;
   std::vector<int> m_order;        // undetermined vertices, breadth-first
   std::vector<char> m_inherits;    // per vertex: in m_order

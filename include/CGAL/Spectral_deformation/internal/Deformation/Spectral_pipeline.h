@@ -11,6 +11,7 @@
 #include <CGAL/Spectral_deformation/Deformation_options.h>
 #include <CGAL/Spectral_deformation/Deformation_reports.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_deformation/internal/Basis/basis_in_region_order.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_products.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
@@ -58,19 +59,20 @@ template <class SparseSPDSolverTraits, bool Iterated>
 class Spectral_pipeline
 {
 public:
-  /// Per region: uses `supplied` when it was computed on this region, else
+  /// Per region: uses `supplied` when it was computed on this region (in its
+  /// order or in the mesh's, `Basis::basis_match()`), else
   /// computes the basis with `eigensolver`; then the reduced matrices and
   /// the detail transfer.
   template <class EigensolverTraits>
   void build(const Region_geometry& region, const Basis_data& supplied, const Spectral_settings& settings,
              const EigensolverTraits& eigensolver, Spectral_preprocess_report& report)
   {
-    const std::uint64_t region_fingerprint = fingerprint(region.arrays);
-    if(!supplied.empty() && supplied.fingerprint == region_fingerprint &&
-       supplied.basis.rows() == region.arrays.number_of_vertices())
-      m_basis = supplied;
+    const Basis::Basis_match match = Basis::basis_match(supplied, region);
+    if(match != Basis::Basis_match::NONE)
+      m_basis = Basis::in_region_order(supplied, region, match);
     else
     {
+      const std::uint64_t region_fingerprint = fingerprint(region.arrays);
       const auto start = std::chrono::steady_clock::now();
       const Eigen::Index m = std::min<Eigen::Index>(static_cast<Eigen::Index>(settings.frequencies),
                                                     region.arrays.number_of_vertices());

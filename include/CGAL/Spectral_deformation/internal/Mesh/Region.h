@@ -10,11 +10,17 @@
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -32,9 +38,37 @@ struct Region_geometry
   double diagonal = 0;        ///< bounding-box diagonal of the rest positions
   std::vector<int> component; ///< per local vertex: its connected component
   int number_of_components = 0;
+  /// The local index of the k-th region vertex in the order of the mesh's
+  /// vertex indices, and the row in `arrays.triangles` of the k-th face in
+  /// the mesh's traversal order (see `in_mesh_order()`).
+  std::vector<int> vertex_from_mesh_order;
+  std::vector<Eigen::Index> face_from_mesh_order;
 
   Eigen::Index number_of_vertices() const { return arrays.number_of_vertices(); }
 };
+
+/// The arrays of `region` with its vertices in the order of the mesh's
+/// vertex indices and its faces in the mesh's traversal order: the arrays a
+/// basis of the whole mesh is computed on (`CGAL::Manifold_harmonics_basis`),
+/// and those of the regions of version 0.1, whose basis files name them.
+inline Triangle_arrays in_mesh_order(const Region_geometry& region)
+{
+  Triangle_arrays result;
+  const std::vector<int>& vertex = region.vertex_from_mesh_order;
+  std::vector<int> mesh_order(vertex.size());
+  result.positions.resize(static_cast<Eigen::Index>(vertex.size()), 3);
+  for(std::size_t k = 0; k < vertex.size(); ++k)
+  {
+    mesh_order[static_cast<std::size_t>(vertex[k])] = static_cast<int>(k);
+    result.positions.row(static_cast<Eigen::Index>(k)) = region.arrays.positions.row(vertex[k]);
+  }
+  result.triangles.resize(static_cast<Eigen::Index>(region.face_from_mesh_order.size()), 3);
+  for(std::size_t f = 0; f < region.face_from_mesh_order.size(); ++f)
+    for(int c = 0; c < 3; ++c)
+      result.triangles(static_cast<Eigen::Index>(f), c) =
+          mesh_order[static_cast<std::size_t>(region.arrays.triangles(region.face_from_mesh_order[f], c))];
+  return result;
+}
 
 /// A `Region_geometry` and the vertices of the mesh it was cut from.
 template <class VertexDescriptor>
@@ -44,9 +78,34 @@ struct Region : Region_geometry
   std::vector<int> local;                 ///< vertex index -> local index, or -1
 };
 
+/// The order of `positions` (n×3) along a Hilbert curve (CGAL's
+/// `hilbert_sort()`, median policy, which is deterministic): neighbours on
+/// the surface get nearby indices. Every pass over the region gathers the
+/// rows of its neighbours (one-rings, faces, sparse rows), and meshes often
+/// number their vertices with little locality (Loop subdivision appends the
+/// new vertices at the end), which leaves most of those gathers to miss the
+/// cache.
+inline std::vector<std::size_t> spatial_order(const Positions& positions)
+{
+  typedef CGAL::Simple_cartesian<double> Kernel;
+  typedef Kernel::Point_3 Point_3;
+  std::vector<Point_3> points;
+  points.reserve(static_cast<std::size_t>(positions.rows()));
+  for(Eigen::Index i = 0; i < positions.rows(); ++i)
+    points.emplace_back(positions(i, 0), positions(i, 1), positions(i, 2));
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  typedef CGAL::Pointer_property_map<Point_3>::type Point_map;
+  CGAL::hilbert_sort(order.begin(), order.end(),
+                     CGAL::Spatial_sort_traits_adapter_3<Kernel, Point_map>(CGAL::make_property_map(points)),
+                     CGAL::Hilbert_sort_median_policy());
+  return order;
+}
+
 /// Cuts the region of the vertices flagged in `is_roi` (indexed by `id`) out
 /// of `tm`, with the rest positions `rest` (indexed likewise), local vertices
-/// in the order of their indices, and validates it. Throws
+/// in the order of `spatial_order()` and faces by their lowest local vertex,
+/// and validates it. Throws
 /// `Spectral_deformation_error` (`INVALID_MESH`) when a face touching the ROI
 /// is not a triangle, no face touches the ROI, or the region is not a valid
 /// triangle mesh.
@@ -88,26 +147,51 @@ extract_region(const TriangleMesh& tm, const VertexIndex& id, const std::vector<
   std::vector<vertex_descriptor> by_index(n);
   for(vertex_descriptor vd : vertices(tm))
     by_index[id(vd)] = vd;
-  region.local.assign(n, -1);
+  std::vector<std::size_t> members;
   for(std::size_t i = 0; i < n; ++i)
     if(in_region[i])
-    {
-      region.local[i] = static_cast<int>(region.vertices.size());
-      region.vertices.push_back(by_index[i]);
-      region.is_fixed.push_back(is_roi[i] ? 0 : 1);
-    }
-  const Eigen::Index region_size = static_cast<Eigen::Index>(region.vertices.size());
-  region.arrays.positions.resize(region_size, 3);
+      members.push_back(i);
+  const Eigen::Index region_size = static_cast<Eigen::Index>(members.size());
+  Positions by_member(region_size, 3);
   for(Eigen::Index r = 0; r < region_size; ++r)
   {
-    const Point& p = rest[id(region.vertices[static_cast<std::size_t>(r)])];
-    region.arrays.positions.row(r) << CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]);
+    const Point& p = rest[members[static_cast<std::size_t>(r)]];
+    by_member.row(r) << CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]);
   }
+  const std::vector<std::size_t> order = spatial_order(by_member);
+  region.vertex_from_mesh_order.resize(order.size());
+  for(std::size_t r = 0; r < order.size(); ++r)
+    region.vertex_from_mesh_order[order[r]] = static_cast<int>(r);
+  region.local.assign(n, -1);
+  region.vertices.reserve(members.size());
+  region.is_fixed.reserve(members.size());
+  region.arrays.positions.resize(region_size, 3);
+  for(std::size_t r = 0; r < order.size(); ++r)
+  {
+    const std::size_t i = members[order[r]];
+    region.local[i] = static_cast<int>(r);
+    region.vertices.push_back(by_index[i]);
+    region.is_fixed.push_back(is_roi[i] ? 0 : 1);
+    region.arrays.positions.row(static_cast<Eigen::Index>(r)) = by_member.row(static_cast<Eigen::Index>(order[r]));
+  }
+  // Faces by their lowest local vertex (a counting sort, stable): the faces
+  // around a vertex then lie near each other too.
+  const auto lowest = [&region](const std::array<std::size_t, 3>& t) {
+    return static_cast<std::size_t>((std::min)({region.local[t[0]], region.local[t[1]], region.local[t[2]]}));
+  };
+  std::vector<Eigen::Index> first_face(static_cast<std::size_t>(region_size) + 1, 0);
+  for(const std::array<std::size_t, 3>& t : faces_of_region)
+    ++first_face[lowest(t) + 1];
+  std::partial_sum(first_face.begin(), first_face.end(), first_face.begin());
   region.arrays.triangles.resize(static_cast<Eigen::Index>(faces_of_region.size()), 3);
-  for(std::size_t f = 0; f < faces_of_region.size(); ++f)
+  region.face_from_mesh_order.reserve(faces_of_region.size());
+  for(const std::array<std::size_t, 3>& t : faces_of_region)
+  {
+    const Eigen::Index f = first_face[lowest(t)]++;
+    region.face_from_mesh_order.push_back(f);
     for(int k = 0; k < 3; ++k)
-      region.arrays.triangles(static_cast<Eigen::Index>(f), k) =
-          region.local[faces_of_region[f][static_cast<std::size_t>(k)]];
+      region.arrays.triangles(f, k) = region.local[t[static_cast<std::size_t>(k)]];
+  }
   validate_triangle_arrays(region.arrays);
   region.component =
       connected_components(region.arrays.triangles, region.arrays.number_of_vertices(), region.number_of_components);
