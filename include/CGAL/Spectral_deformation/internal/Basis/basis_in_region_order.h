@@ -11,6 +11,7 @@
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 
 #include <cstddef>
+#include <cstdint>
 
 namespace CGAL {
 namespace Spectral_deformation {
@@ -27,12 +28,15 @@ enum class Basis_match
   MESH_ORDER
 };
 
-inline Basis_match basis_match(const Basis_data& data, const Mesh::Region_geometry& region)
+/// `region_fingerprint` is `fingerprint(region.arrays)`, which the callers
+/// need anyway.
+inline Basis_match basis_match(const Basis_data& data, const Mesh::Region_geometry& region,
+                               std::uint64_t region_fingerprint)
 {
   if(data.empty() || data.basis.rows() != region.number_of_vertices() ||
      data.number_of_faces != static_cast<std::uint64_t>(region.arrays.number_of_faces()))
     return Basis_match::NONE;
-  if(data.fingerprint == fingerprint(region.arrays))
+  if(data.fingerprint == region_fingerprint)
     return Basis_match::REGION_ORDER;
   if(data.fingerprint == fingerprint(Mesh::in_mesh_order(region)))
     return Basis_match::MESH_ORDER;
@@ -41,7 +45,8 @@ inline Basis_match basis_match(const Basis_data& data, const Mesh::Region_geomet
 
 /// `data` with its rows in the order of the region's vertices; `data` must
 /// match `region` (`basis_match()` not `NONE`).
-inline Basis_data in_region_order(const Basis_data& data, const Mesh::Region_geometry& region, Basis_match match)
+inline Basis_data in_region_order(const Basis_data& data, const Mesh::Region_geometry& region, Basis_match match,
+                                  std::uint64_t region_fingerprint)
 {
   if(match != Basis_match::MESH_ORDER)
     return data;
@@ -56,7 +61,7 @@ inline Basis_data in_region_order(const Basis_data& data, const Mesh::Region_geo
     result.basis.row(local[k]) = data.basis.row(static_cast<Eigen::Index>(k));
     result.mass[local[k]] = data.mass[static_cast<Eigen::Index>(k)];
   }
-  result.fingerprint = fingerprint(region.arrays);
+  result.fingerprint = region_fingerprint;
   return result;
 }
 

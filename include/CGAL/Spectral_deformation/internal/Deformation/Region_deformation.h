@@ -168,14 +168,15 @@ public:
   {
     Basis_data data = Basis::read_basis(is);
     const Mesh::Region<vertex_descriptor> region = extract_region(selection);
-    const Basis::Basis_match match = Basis::basis_match(data, region);
+    const std::uint64_t region_fingerprint = Mesh::fingerprint(region.arrays);
+    const Basis::Basis_match match = Basis::basis_match(data, region, region_fingerprint);
     if(match == Basis::Basis_match::NONE)
     {
       // Throws with the sizes, or the fingerprint, that differ.
       Basis::check_basis_matches(data, region.arrays);
       throw Error(Error::MESH_MISMATCH, "load: the basis was computed on a different mesh");
     }
-    m_supplied_basis = Basis::in_region_order(data, region, match);
+    m_supplied_basis = Basis::in_region_order(data, region, match, region_fingerprint);
     drop_region();
   }
 

@@ -67,12 +67,12 @@ public:
   void build(const Region_geometry& region, const Basis_data& supplied, const Spectral_settings& settings,
              const EigensolverTraits& eigensolver, Spectral_preprocess_report& report)
   {
-    const Basis::Basis_match match = Basis::basis_match(supplied, region);
+    const std::uint64_t region_fingerprint = fingerprint(region.arrays);
+    const Basis::Basis_match match = Basis::basis_match(supplied, region, region_fingerprint);
     if(match != Basis::Basis_match::NONE)
-      m_basis = Basis::in_region_order(supplied, region, match);
+      m_basis = Basis::in_region_order(supplied, region, match, region_fingerprint);
     else
     {
-      const std::uint64_t region_fingerprint = fingerprint(region.arrays);
       const auto start = std::chrono::steady_clock::now();
       const Eigen::Index m = std::min<Eigen::Index>(static_cast<Eigen::Index>(settings.frequencies),
                                                     region.arrays.number_of_vertices());

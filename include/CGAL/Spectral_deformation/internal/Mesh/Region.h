@@ -42,7 +42,7 @@ struct Region_geometry
   /// vertex indices, and the row in `arrays.triangles` of the k-th face in
   /// the mesh's traversal order (see `in_mesh_order()`).
   std::vector<int> vertex_from_mesh_order;
-  std::vector<Eigen::Index> face_from_mesh_order;
+  std::vector<int> face_from_mesh_order;
 
   Eigen::Index number_of_vertices() const { return arrays.number_of_vertices(); }
 };
@@ -179,7 +179,7 @@ extract_region(const TriangleMesh& tm, const VertexIndex& id, const std::vector<
   const auto lowest = [&region](const std::array<std::size_t, 3>& t) {
     return static_cast<std::size_t>((std::min)({region.local[t[0]], region.local[t[1]], region.local[t[2]]}));
   };
-  std::vector<Eigen::Index> first_face(static_cast<std::size_t>(region_size) + 1, 0);
+  std::vector<int> first_face(static_cast<std::size_t>(region_size) + 1, 0);
   for(const std::array<std::size_t, 3>& t : faces_of_region)
     ++first_face[lowest(t) + 1];
   std::partial_sum(first_face.begin(), first_face.end(), first_face.begin());
@@ -187,7 +187,7 @@ extract_region(const TriangleMesh& tm, const VertexIndex& id, const std::vector<
   region.face_from_mesh_order.reserve(faces_of_region.size());
   for(const std::array<std::size_t, 3>& t : faces_of_region)
   {
-    const Eigen::Index f = first_face[lowest(t)]++;
+    const int f = first_face[lowest(t)]++;
     region.face_from_mesh_order.push_back(f);
     for(int k = 0; k < 3; ++k)
       region.arrays.triangles(f, k) = region.local[t[static_cast<std::size_t>(k)]];
