@@ -158,7 +158,14 @@ extract_region(const TriangleMesh& tm, const VertexIndex& id, const std::vector<
     const Point& p = rest[members[static_cast<std::size_t>(r)]];
     by_member.row(r) << CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]);
   }
-  const std::vector<std::size_t> order = spatial_order(by_member);
+  // A non-finite coordinate has no place on the curve (and would break the
+  // sort's ordering): such a region keeps the mesh's order, and
+  // validate_triangle_arrays() below names the vertex.
+  std::vector<std::size_t> order(members.size());
+  if(by_member.allFinite())
+    order = spatial_order(by_member);
+  else
+    std::iota(order.begin(), order.end(), std::size_t(0));
   region.vertex_from_mesh_order.resize(order.size());
   for(std::size_t r = 0; r < order.size(); ++r)
     region.vertex_from_mesh_order[order[r]] = static_cast<int>(r);
