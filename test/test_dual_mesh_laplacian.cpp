@@ -5,6 +5,7 @@
 
 #include <CGAL/Dual_mesh_laplacian.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Operators_in_basis.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Sparse_times_dense.h>
 
 #include <catch2/catch.hpp>
@@ -274,4 +275,51 @@ TEST_CASE("the blocked sparse-times-basis product is Eigen's, bit for bit, on an
   Eigen::MatrixXd product;
   sparse_times_dense(LF, H, product);
   CHECK((product.array() == (LF * H).array()).all());
+}
+
+TEST_CASE("the reduced matrices are formed in the basis without n-sized intermediates", "[dual]")
+{
+  namespace LA = CGAL::Spectral_deformation::internal::Linear_algebra;
+  using namespace CGAL::Spectral_deformation::internal::Mesh;
+  const Soup soup = bumpy_plane(40);
+  const Dual_mesh_operator op(dual_triangles(soup), static_cast<Eigen::Index>(soup.points.size()));
+  Positions positions(static_cast<Eigen::Index>(soup.points.size()), 3);
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    positions.row(static_cast<Eigen::Index>(i)) << soup.points[i].x(), soup.points[i].y(), soup.points[i].z();
+  const Eigen::Matrix<double, Eigen::Dynamic, 3> weights = op.evaluate(positions).weights;
+  const Eigen::SparseMatrix<double> LF = op.laplacian_operator(weights);
+  const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(LF.transpose()) * LF;
+  const auto row_value = [&op, &weights](Eigen::Index r, const double* h) { return op.apply_row(weights, r, h); };
+
+  // One row at a time, the operator without its matrix.
+  const Eigen::VectorXd h = Eigen::VectorXd::Random(LF.cols());
+  const Eigen::VectorXd rows = LF * h;
+  for(Eigen::Index r = 0; r < LF.rows(); ++r)
+    REQUIRE(std::abs(row_value(r, h.data()) - rows[r]) <= 1e-13 * (1 + std::abs(rows[r])));
+
+  for(Eigen::Index columns : {1, 7, 100})
+  {
+    const Eigen::MatrixXd H = Eigen::MatrixXd::Random(LF.cols(), columns);
+    const Eigen::MatrixXd LFH = LF * H;
+    const Eigen::MatrixXd expected_gram = LFH.transpose() * LFH;
+    const Eigen::MatrixXd expected_projection = H.transpose() * (normal * H);
+    Eigen::MatrixXd gram, projection;
+    LA::gram_in_basis(LF.rows(), row_value, H, gram);
+    LA::sparse_in_basis(normal, H, projection);
+    const double scale = expected_gram.cwiseAbs().maxCoeff();
+    CHECK((gram - expected_gram).cwiseAbs().maxCoeff() < 1e-12 * scale);
+    CHECK((projection - expected_projection).cwiseAbs().maxCoeff() < 1e-12 * scale);
+    CHECK((gram.array() == gram.transpose().array()).all());
+#ifdef _OPENMP
+    // The same bits on one thread.
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    Eigen::MatrixXd single_gram, single_projection;
+    LA::gram_in_basis(LF.rows(), row_value, H, single_gram);
+    LA::sparse_in_basis(normal, H, single_projection);
+    omp_set_num_threads(threads);
+    CHECK((single_gram.array() == gram.array()).all());
+    CHECK((single_projection.array() == projection.array()).all());
+#endif
+  }
 }

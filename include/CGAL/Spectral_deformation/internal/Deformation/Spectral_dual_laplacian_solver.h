@@ -13,7 +13,7 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Rotated_edges.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Dense_products.h>
-#include <CGAL/Spectral_deformation/internal/Linear_algebra/Sparse_times_dense.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Operators_in_basis.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
@@ -90,10 +90,13 @@ private:
     {
       m_rest_coordinates = m_dual.evaluate(m_smooth_rest);
       m_negative_heights = -m_rest_coordinates.heights;
-      const Eigen::SparseMatrix<double> LF = m_dual.laplacian_operator(m_rest_coordinates.weights);
-      const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(LF.transpose()) * LF;
-      // Never form the dense rows×m matrix L̂F H: (LᵀL) H is n×m like H.
-      m_G0 = projected(normal, basis);
+      const Dual_coordinates& rest_coordinates = m_rest_coordinates;
+      Linear_algebra::gram_in_basis(
+          m_dual.number_of_rows(),
+          [this, &rest_coordinates](Eigen::Index r, const double* h) {
+            return m_dual.apply_row(rest_coordinates.weights, r, h);
+          },
+          basis, m_G0);
     }
     else
     {
@@ -112,7 +115,8 @@ private:
       }
       const Eigen::SparseMatrix<double>& Q = *stiffness;
       m_rotated_edges.initialize(Q, m_smooth_rest, m_smooth_rest);
-      const Eigen::MatrixXd arap = projected(Q, basis);
+      Eigen::MatrixXd arap;
+      Linear_algebra::sparse_in_basis(Q, basis, arap);
       // The sum weighs the two energies alike: its two matrices get the same
       // trace (their ratio depends on the resolution of the mesh).
       if(uses_dual_energy() && arap.trace() > 0)
@@ -126,16 +130,6 @@ private:
               (rest.positions.colwise().maxCoeff() - rest.positions.colwise().minCoeff()).norm();
     m_factored = false;
     build_patches();
-  }
-
-  /// Hᵀ A H for a sparse A.
-  static Eigen::MatrixXd projected(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& H)
-  {
-    Eigen::MatrixXd AH;
-    Linear_algebra::sparse_times_dense(A, H, AH);
-    Eigen::MatrixXd result(H.cols(), H.cols());
-    Linear_algebra::dense_product(true, H, false, AH, 1.0, 0.0, result);
-    return result;
   }
 
 public:

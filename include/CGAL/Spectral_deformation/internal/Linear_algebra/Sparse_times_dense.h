@@ -17,21 +17,24 @@ namespace Spectral_deformation {
 namespace internal {
 namespace Linear_algebra {
 
-/// `result` = A H for a column-major sparse A and a dense H with many
-/// columns (a basis, n × m). Eigen's product makes one pass over A for each
-/// column of H; here each pass serves a block of `block_columns` columns of
-/// H, accumulated in a row-major buffer so that a nonzero of A updates one
-/// cache line whatever the ordering of the vertices, and the blocks are
-/// shared by the OpenMP threads. Every entry sums the same terms in the same
-/// order as Eigen's product (the columns of A in ascending order), so the
-/// result does not depend on the number of threads.
-inline void sparse_times_dense(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& H,
-                               Eigen::MatrixXd& result)
+/// Calls `consume(first, width, buffer)` with A times each block of
+/// `width` (at most eight) columns of H starting at column `first`, for a
+/// column-major sparse A and a dense H with many columns (a basis, n × m),
+/// `buffer` a row-major A.rows() × 8 matrix of which the first `width`
+/// columns hold the product. Eigen's product makes one pass over A for each
+/// column of H; here each pass serves a block, accumulated in a row-major
+/// buffer so that a nonzero of A updates one cache line whatever the
+/// ordering of the vertices, and the blocks are shared by the OpenMP threads
+/// (`consume` is called from them). Every entry sums the same terms in the
+/// same order as Eigen's product (the columns of A in ascending order), so
+/// the products do not depend on the number of threads.
+template <class Consume>
+void for_each_column_block_product(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& H,
+                                   const Consume& consume)
 {
   constexpr Eigen::Index block_columns = 8;
   typedef Eigen::Matrix<double, Eigen::Dynamic, block_columns, Eigen::RowMajor> Row_block;
   eigen_assert(A.cols() == H.rows());
-  result.resize(A.rows(), H.cols());
   const long long blocks = (H.cols() + block_columns - 1) / block_columns;
 #ifdef _OPENMP
 #pragma omp parallel if(A.nonZeros() * H.cols() > 1000000)
@@ -54,9 +57,19 @@ inline void sparse_times_dense(const Eigen::SparseMatrix<double>& A, const Eigen
         for(Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it)
           buffer.row(it.index()) += it.value() * h;
       }
-      result.middleCols(first, width) = buffer.leftCols(width);
+      consume(first, width, static_cast<const Row_block&>(buffer));
     }
   }
+}
+
+/// `result` = A H (see `for_each_column_block_product()`).
+inline void sparse_times_dense(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& H,
+                               Eigen::MatrixXd& result)
+{
+  result.resize(A.rows(), H.cols());
+  for_each_column_block_product(A, H, [&result](Eigen::Index first, Eigen::Index width, const auto& buffer) {
+    result.middleCols(first, width) = buffer.leftCols(width);
+  });
 }
 
 } // namespace Linear_algebra

@@ -202,6 +202,22 @@ public:
     }
   }
 
+  /// Row `r` of `laplacian_operator(weights)` applied to the vertex values
+  /// `h` (one value per vertex), without forming the operator: the neighbour
+  /// faces' means weighted by the row's weights, minus the face's own mean.
+  double apply_row(const Eigen::Matrix<double, Eigen::Dynamic, 3>& weights, Eigen::Index r,
+                   const double* h) const
+  {
+    const int f = m_row_faces[static_cast<std::size_t>(r)];
+    const auto face_sum = [this, h](int g) {
+      return h[m_triangles(g, 0)] + h[m_triangles(g, 1)] + h[m_triangles(g, 2)];
+    };
+    double sum = -face_sum(f);
+    for(int j = 0; j < 3; ++j)
+      sum += weights(r, j) * face_sum(m_neighbours(f, j));
+    return sum / 3.0;
+  }
+
   /// The sparse operator L̂F (rows × n): row r maps vertex positions to the
   /// dual Laplacian coordinate Σ_j w_rj (v̂_j - v̂_r) with the given weights.
   Eigen::SparseMatrix<double> laplacian_operator(
