@@ -58,13 +58,12 @@ struct Takes_vertex_positions<
                 std::declval<const Mesh::Positions&>()))>> : std::true_type
 {};
 
-/// The m smallest generalized eigenpairs of the cotangent stiffness against
-/// the lumped mass of `mesh` (validated arrays). The stiffness matrix is
-/// assembled in huge pages when the eigensolver was asked for process-wide
-/// tuning. Throws `Spectral_deformation_error`.
+/// The m smallest generalized eigenpairs of `stiffness`, the cotangent
+/// stiffness of `mesh` (validated arrays), against its lumped mass. Throws
+/// `Spectral_deformation_error`.
 template <class EigensolverTraits>
-void compute_manifold_harmonics(const Triangle_arrays& mesh, Eigen::Index m,
-                                EigensolverTraits& eigensolver, Eigen::VectorXd& eigenvalues,
+void compute_manifold_harmonics(const Triangle_arrays& mesh, const Eigen::SparseMatrix<double>& stiffness,
+                                Eigen::Index m, EigensolverTraits& eigensolver, Eigen::VectorXd& eigenvalues,
                                 Eigen::MatrixXd& eigenvectors, Eigen::VectorXd& mass)
 {
   typedef Spectral_deformation_error Error;
@@ -73,8 +72,7 @@ void compute_manifold_harmonics(const Triangle_arrays& mesh, Eigen::Index m,
     throw Error(Error::INVALID_ARGUMENT,
                 "the number of frequencies must be between 1 and the number of vertices (" +
                     std::to_string(n) + "), got " + std::to_string(m));
-  const Eigen::SparseMatrix<double> stiffness =
-      cotangent_stiffness(mesh, process_wide_tuning_of(eigensolver));
+  CGAL_precondition(stiffness.rows() == n && stiffness.cols() == n);
   mass = lumped_mass(mesh);
   if constexpr(Takes_vertex_positions<EigensolverTraits>::value)
     eigensolver.set_vertex_positions(mesh.positions);
@@ -86,6 +84,18 @@ void compute_manifold_harmonics(const Triangle_arrays& mesh, Eigen::Index m,
     throw Error(Error::SOLVER_FAILURE,
                 "the manifold harmonics eigensolver returned an incomplete or non-finite result");
   normalize_signs(eigenvectors);
+}
+
+/// The same, with the cotangent stiffness assembled here (in huge pages when
+/// the eigensolver was asked for process-wide tuning).
+template <class EigensolverTraits>
+void compute_manifold_harmonics(const Triangle_arrays& mesh, Eigen::Index m,
+                                EigensolverTraits& eigensolver, Eigen::VectorXd& eigenvalues,
+                                Eigen::MatrixXd& eigenvectors, Eigen::VectorXd& mass)
+{
+  const Eigen::SparseMatrix<double> stiffness =
+      cotangent_stiffness(mesh, process_wide_tuning_of(eigensolver));
+  compute_manifold_harmonics(mesh, stiffness, m, eigensolver, eigenvalues, eigenvectors, mass);
 }
 
 } // namespace internal

@@ -68,6 +68,9 @@ public:
              const EigensolverTraits& eigensolver, Spectral_preprocess_report& report)
   {
     const std::uint64_t region_fingerprint = fingerprint(region.arrays);
+    // The stiffness of the region: for the basis, the ARAP energy and the detail transfer.
+    Eigen::SparseMatrix<double> stiffness =
+        cotangent_stiffness(region.arrays, process_wide_tuning_of(eigensolver));
     const Basis::Basis_match match = Basis::basis_match(supplied, region, region_fingerprint);
     if(match != Basis::Basis_match::NONE)
       m_basis = Basis::in_region_order(supplied, region, match, region_fingerprint);
@@ -77,7 +80,8 @@ public:
       const Eigen::Index m = std::min<Eigen::Index>(static_cast<Eigen::Index>(settings.frequencies),
                                                     region.arrays.number_of_vertices());
       EigensolverTraits solver = eigensolver;
-      compute_manifold_harmonics(region.arrays, m, solver, m_basis.eigenvalues, m_basis.basis, m_basis.mass);
+      compute_manifold_harmonics(region.arrays, stiffness, m, solver, m_basis.eigenvalues, m_basis.basis,
+                                 m_basis.mass);
       m_basis.number_of_faces = static_cast<std::uint64_t>(region.arrays.number_of_faces());
       m_basis.fingerprint = region_fingerprint;
       report.basis_computed = true;
@@ -88,8 +92,6 @@ public:
     // Without iterations there are no rotations to fit: the linear
     // algorithm keeps the paper's system.
     m_solver.set_smooth_energy(Iterated ? settings.smooth_energy : DUAL_LAPLACIAN_ENERGY);
-    // The stiffness of the region, for the ARAP energy and the detail transfer.
-    Eigen::SparseMatrix<double> stiffness = cotangent_stiffness(region.arrays);
     m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays, stiffness);
     m_detail.set_process_wide_tuning(process_wide_tuning_of(eigensolver));
     m_detail.initialize(region.arrays, m_solver.smooth_rest(), std::move(stiffness));
