@@ -75,18 +75,35 @@ public:
   void initialize(const Triangle_arrays& detailed, const Positions& smooth_rest,
                   Eigen::SparseMatrix<double> stiffness)
   {
-    typedef Spectral_deformation_error Error;
+    set_mesh(detailed, std::move(stiffness));
+    set_smooth_rest(smooth_rest);
+  }
+
+  /// The first half of `initialize()`: the detailed mesh and its stiffness,
+  /// all that the factorizations (`prepare_soft()`, `prepare_dirichlet()`)
+  /// need; the transfers need `set_smooth_rest()` as well.
+  void set_mesh(const Triangle_arrays& detailed, Eigen::SparseMatrix<double> stiffness)
+  {
     m_rest = detailed.positions;
     m_stiffness = std::move(stiffness);
-    if(!smooth_rest.allFinite())
-      throw Error(Error::SOLVER_FAILURE, "the smooth mesh has non-finite coordinates");
-    m_rotated_edges.initialize(m_stiffness, m_rest, smooth_rest);
-
+    m_rotated_edges = Rotated_edges();
     m_component = connected_components(detailed.triangles, m_rest.rows(), m_number_of_components);
     m_soft.forget_matrix();
     m_dirichlet.forget_matrix();
     m_soft_ready = false;
     m_dirichlet_ready = false;
+    m_dirichlet_prescribed.clear();
+  }
+
+  /// The second half of `initialize()`: the smooth rest positions, whose
+  /// one-rings the rotations of a transfer are fitted against. Throws
+  /// `Spectral_deformation_error` when `smooth_rest` is not finite.
+  void set_smooth_rest(const Positions& smooth_rest)
+  {
+    typedef Spectral_deformation_error Error;
+    if(!smooth_rest.allFinite())
+      throw Error(Error::SOLVER_FAILURE, "the smooth mesh has non-finite coordinates");
+    m_rotated_edges.initialize(m_stiffness, m_rest, smooth_rest);
   }
 
   /// Soft policy: factor, once per mesh (later calls do nothing), the
@@ -118,11 +135,15 @@ public:
   }
 
   /// Exact policy: factor the system with the vertices flagged in
-  /// `prescribed` fixed. Returns false when a component has no prescribed
+  /// `prescribed` fixed (nothing to do when the last factorization had the
+  /// same vertices). Returns false when a component has no prescribed
   /// vertex or the factorization fails.
   bool prepare_dirichlet(const std::vector<char>& prescribed)
   {
+    if(m_dirichlet_ready && prescribed == m_dirichlet_prescribed)
+      return true; // factored for these vertices already
     m_dirichlet_ready = false;
+    m_dirichlet_prescribed.clear();
     std::vector<char> component_has(static_cast<std::size_t>(m_number_of_components), 0);
     for(std::size_t i = 0; i < prescribed.size(); ++i)
       if(prescribed[i])
@@ -131,6 +152,8 @@ public:
       if(!has)
         return false;
     m_dirichlet_ready = m_dirichlet.factor(m_stiffness, prescribed);
+    if(m_dirichlet_ready)
+      m_dirichlet_prescribed = prescribed;
     return m_dirichlet_ready;
   }
 
@@ -215,6 +238,7 @@ private:
   Dirichlet_system<SparseSPDSolverTraits> m_dirichlet;
   bool m_soft_ready = false;
   bool m_dirichlet_ready = false;
+  std::vector<char> m_dirichlet_prescribed; // the vertices of the Dirichlet factor
 };
 
 } // namespace Deformation

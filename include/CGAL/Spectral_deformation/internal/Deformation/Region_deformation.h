@@ -261,13 +261,36 @@ private:
         selection.originals());
   }
 
+  // The fixed ring around the region and the control vertices of `selection`.
+  static Constraint_set selection_constraints(const VertexSelection& selection, const Region& region)
+  {
+    return make_constraint_set(
+        region, [&selection, &region](std::size_t i) { return selection.is_control(region.vertices[i]); });
+  }
+
   void build_region(const VertexSelection& selection)
   {
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<Region> region(new Region());
     static_cast<Mesh::Region<vertex_descriptor>&>(*region) = extract_region(selection);
     if constexpr(is_spectral)
-      region->pipeline.build(*region, m_supplied_basis, m_settings, m_eigensolver, m_preprocess_report);
+    {
+      // The constraint set that preprocess() prepares next: its factorization
+      // may start while the basis is computed. An invalid one is reported
+      // by preprocess() after the region is built, as without the overlap.
+      Constraint_set first_set;
+      bool valid = true;
+      try
+      {
+        first_set = selection_constraints(selection, *region);
+      }
+      catch(const Error&)
+      {
+        valid = false;
+      }
+      region->pipeline.build(*region, m_supplied_basis, m_settings, m_eigensolver, m_preprocess_report,
+                             valid ? &first_set : nullptr);
+    }
     else
       region->pipeline.build(*region, m_process_wide_tuning);
     m_region = std::move(region);
@@ -301,8 +324,7 @@ private:
     if constexpr(is_spectral)
       m_preprocess_report.number_of_frequencies = region.pipeline.number_of_frequencies();
 
-    m_constraints = make_constraint_set(
-        region, [&selection, &region](std::size_t i) { return selection.is_control(region.vertices[i]); });
+    m_constraints = selection_constraints(selection, region);
     m_preprocess_report.number_of_constrained_vertices = m_constraints.size();
 
     const auto start = std::chrono::steady_clock::now();

@@ -25,8 +25,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <exception>
+#include <system_error>
+#include <thread>
 #include <utility>
 #include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace CGAL {
 namespace Spectral_deformation {
@@ -63,14 +70,21 @@ public:
   /// order or in the mesh's, `Basis::basis_match()`), else
   /// computes the basis with `eigensolver`; then the reduced matrices and
   /// the detail transfer.
+  ///
+  /// With `first_set`, the constraint set that `prepare()` will be called
+  /// with next, the exact policy's factorization for it runs on a second
+  /// thread while the basis is computed (see `overlapped()`).
   template <class EigensolverTraits>
   void build(const Region_geometry& region, const Basis_data& supplied, const Spectral_settings& settings,
-             const EigensolverTraits& eigensolver, Spectral_preprocess_report& report)
+             const EigensolverTraits& eigensolver, Spectral_preprocess_report& report,
+             const Constraint_set* first_set = nullptr)
   {
     const std::uint64_t region_fingerprint = fingerprint(region.arrays);
+    const bool tuning = process_wide_tuning_of(eigensolver);
     // The stiffness of the region: for the basis, the ARAP energy and the detail transfer.
-    Eigen::SparseMatrix<double> stiffness =
-        cotangent_stiffness(region.arrays, process_wide_tuning_of(eigensolver));
+    m_detail.set_process_wide_tuning(tuning);
+    m_detail.set_mesh(region.arrays, cotangent_stiffness(region.arrays, tuning));
+    const Eigen::SparseMatrix<double>& stiffness = m_detail.stiffness();
     const Basis::Basis_match match = Basis::basis_match(supplied, region, region_fingerprint);
     if(match != Basis::Basis_match::NONE)
       m_basis = Basis::in_region_order(supplied, region, match, region_fingerprint);
@@ -80,8 +94,11 @@ public:
       const Eigen::Index m = std::min<Eigen::Index>(static_cast<Eigen::Index>(settings.frequencies),
                                                     region.arrays.number_of_vertices());
       EigensolverTraits solver = eigensolver;
-      compute_manifold_harmonics(region.arrays, stiffness, m, solver, m_basis.eigenvalues, m_basis.basis,
-                                 m_basis.mass);
+      const bool overlap = first_set != nullptr && settings.policy == EXACT_CONSTRAINTS && !tuning;
+      overlapped(overlap ? prescribed_flags(region, *first_set) : std::vector<char>(), [&] {
+        compute_manifold_harmonics(region.arrays, stiffness, m, solver, m_basis.eigenvalues, m_basis.basis,
+                                   m_basis.mass);
+      });
       m_basis.number_of_faces = static_cast<std::uint64_t>(region.arrays.number_of_faces());
       m_basis.fingerprint = region_fingerprint;
       report.basis_computed = true;
@@ -93,8 +110,7 @@ public:
     // algorithm keeps the paper's system.
     m_solver.set_smooth_energy(Iterated ? settings.smooth_energy : DUAL_LAPLACIAN_ENERGY);
     m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays, stiffness);
-    m_detail.set_process_wide_tuning(process_wide_tuning_of(eigensolver));
-    m_detail.initialize(region.arrays, m_solver.smooth_rest(), std::move(stiffness));
+    m_detail.set_smooth_rest(m_solver.smooth_rest());
     m_has_solution = false;
   }
 
@@ -110,12 +126,7 @@ public:
     m_policy = settings.policy;
     bool factored = false;
     if(m_policy == EXACT_CONSTRAINTS)
-    {
-      std::vector<char> prescribed(region.is_fixed.size(), 0);
-      for(int i : set.constrained)
-        prescribed[static_cast<std::size_t>(i)] = 1;
-      factored = m_detail.prepare_dirichlet(prescribed);
-    }
+      factored = m_detail.prepare_dirichlet(prescribed_flags(region, set));
     else
       factored = m_detail.prepare_soft(region.is_fixed);
     if(!factored)
@@ -191,6 +202,73 @@ public:
   }
 
 private:
+  static std::vector<char> prescribed_flags(const Region_geometry& region, const Constraint_set& set)
+  {
+    std::vector<char> prescribed(region.is_fixed.size(), 0);
+    for(int i : set.constrained)
+      prescribed[static_cast<std::size_t>(i)] = 1;
+    return prescribed;
+  }
+
+  static int available_threads()
+  {
+#ifdef _OPENMP
+    return omp_in_parallel() ? 1 : omp_get_max_threads();
+#else
+    return static_cast<int>(std::thread::hardware_concurrency());
+#endif
+  }
+
+  // Runs `basis_step` and, with `prescribed` not empty and two threads
+  // available (OpenMP's count, when the package uses OpenMP), the exact
+  // policy's factorization of the detail transfer for these prescribed
+  // vertices on a second thread at the same time: neither needs the other,
+  // the factorization runs mostly on one thread, and the basis has long
+  // sequential stages (its reduced eigenproblem). Without a second thread
+  // the factorization is left to `prepare()`, which also retries it when it
+  // failed here and reports why.
+  template <class Step>
+  void overlapped(const std::vector<char>& prescribed, const Step& basis_step)
+  {
+    if(prescribed.empty() || available_threads() < 2)
+    {
+      basis_step();
+      return;
+    }
+    std::exception_ptr error;
+    std::thread worker;
+    try
+    {
+      worker = std::thread([this, &prescribed, &error] {
+        try
+        {
+          m_detail.prepare_dirichlet(prescribed);
+        }
+        catch(...)
+        {
+          error = std::current_exception();
+        }
+      });
+    }
+    catch(const std::system_error&)
+    {
+      basis_step(); // no thread to be had: one after the other
+      return;
+    }
+    try
+    {
+      basis_step();
+    }
+    catch(...)
+    {
+      worker.join();
+      throw;
+    }
+    worker.join();
+    if(error)
+      std::rethrow_exception(error);
+  }
+
   bool transfer_exact(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
                       const Positions& smooth_deformed, Positions& result)
   {
