@@ -23,6 +23,10 @@
 #include <set>
 #include <sstream>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 using namespace test_meshes;
 namespace internal = CGAL::Spectral_deformation::internal;
 typedef boost::graph_traits<Surface_mesh>::vertex_descriptor SM_vertex;
@@ -396,6 +400,28 @@ TEST_CASE("process-wide tuning is an opt-in of every algorithm and does not chan
   const Run spectral = deform_bar<Spectral>(soup, still, bend, 5, 0.0, 40);
   const Run spectral_tuned = deform_bar<Spectral>(soup, still, bend, 5, 0.0, 40, CGAL::EXACT_CONSTRAINTS, true);
   CHECK(distance(spectral, spectral_tuned) < 1e-9);
+}
+
+// With two threads, the exact policy's first factorization runs beside the
+// basis; on one thread, after it: the same systems, so the same result.
+TEST_CASE("the factorization made during the basis gives the result of the one made after it", "[deformation]")
+{
+#ifdef _OPENMP
+  const Soup soup = bar(16, 2);
+  const internal::Deformation::Rigid_motion still;
+  const internal::Deformation::Rigid_motion bend =
+      motion(pi / 4, Eigen::Vector3d::UnitX(), Eigen::Vector3d(0, 0, 5.0));
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(2);
+  const Run overlapped = deform_bar<Spectral>(soup, still, bend, 5, 0.0, 40);
+  omp_set_num_threads(1);
+  const Run sequential = deform_bar<Spectral>(soup, still, bend, 5, 0.0, 40);
+  omp_set_num_threads(threads);
+  CHECK((overlapped.after - overlapped.before).cwiseAbs().maxCoeff() > 0.1);
+  CHECK((overlapped.after - sequential.after).rowwise().norm().maxCoeff() / diagonal_of(overlapped.before) < 1e-9);
+#else
+  SUCCEED("without OpenMP the package runs on one thread: nothing overlaps");
+#endif
 }
 
 // Process-wide tuning changes how fast the factorizations and the basis are

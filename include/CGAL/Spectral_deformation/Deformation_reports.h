@@ -29,8 +29,8 @@ struct Spectral_preprocess_report
   std::size_t number_of_frequencies = 0;    ///< basis functions in use (spectral algorithms; 0 with `SPATIAL_DUAL_LAPLACIAN`)
   std::size_t number_of_constrained_vertices = 0; ///< control vertices and fixed ring vertices
   double region_seconds = 0;                ///< region extraction, validation, basis, per-region matrices and factorizations
-  double basis_seconds = 0;                 ///< of which the eigensolve
-  double factorization_seconds = 0;         ///< per constraint set: the reduced factorization, plus the sparse one of the exact policy or of `SPATIAL_DUAL_LAPLACIAN`
+  double basis_seconds = 0;                 ///< of which the eigensolve (with the exact policy's first sparse factorization, which runs on a second thread meanwhile when two threads are available)
+  double factorization_seconds = 0;         ///< per constraint set: the reduced factorization, plus the sparse one of the exact policy (unless done during the eigensolve) or of `SPATIAL_DUAL_LAPLACIAN`
 };
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationRef

@@ -210,17 +210,18 @@ private:
     return prescribed;
   }
 
+  // OpenMP's thread count: a program built without OpenMP runs on one thread.
   static int available_threads()
   {
 #ifdef _OPENMP
     return omp_in_parallel() ? 1 : omp_get_max_threads();
 #else
-    return static_cast<int>(std::thread::hardware_concurrency());
+    return 1;
 #endif
   }
 
   // Runs `basis_step` and, with `prescribed` not empty and two threads
-  // available (OpenMP's count, when the package uses OpenMP), the exact
+  // available, the exact
   // policy's factorization of the detail transfer for these prescribed
   // vertices on a second thread at the same time: neither needs the other,
   // the factorization runs mostly on one thread, and the basis has long
