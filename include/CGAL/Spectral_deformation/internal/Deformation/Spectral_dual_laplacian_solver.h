@@ -199,18 +199,29 @@ public:
     A.triangularView<Eigen::StrictlyUpper>() = A.transpose();
     m_regularization = 0;
     m_cholesky.compute(A);
-    if(m_cholesky.info() != Eigen::Success)
+    if(m_cholesky.info() != Eigen::Success || !clearly_definite(m_cholesky))
     {
       // A constraint set can leave directions free (a tube held by one ring
       // may stretch along its axis at no cost): a tiny Tikhonov term, towards
       // the current shape in solve(), makes Ã definite and picks the solution
-      // that moves least in those directions.
+      // that moves least in those directions. Rounding can let the
+      // factorization of such a singular Ã succeed with pivots at the level
+      // of rounding errors, whose solution is then made of rounding errors:
+      // that counts as singular too.
       m_regularization = 1e-10 * A.trace() / double(A.rows());
       A.diagonal().array() += m_regularization;
       m_cholesky.compute(A);
     }
     m_factored = (m_cholesky.info() == Eigen::Success);
     return m_factored;
+  }
+
+  // Whether every pivot of the factor is above the rounding errors of the
+  // largest one.
+  static bool clearly_definite(const Eigen::LLT<Eigen::MatrixXd>& cholesky)
+  {
+    const Eigen::ArrayXd pivots = cholesky.matrixLLT().diagonal().array().square();
+    return pivots.size() == 0 || pivots.minCoeff() > 1e-12 * pivots.maxCoeff();
   }
 
   /// Iterates from the coefficients `coefficients` (m×3, in/out) towards the
