@@ -40,6 +40,15 @@ CGAL::Spectral_deformation::internal::Mesh::Triangles dual_triangles(const Soup&
   return triangles;
 }
 
+/// The points of a soup as the internal arrays.
+CGAL::Spectral_deformation::internal::Mesh::Positions soup_positions(const Soup& soup)
+{
+  CGAL::Spectral_deformation::internal::Mesh::Positions positions(static_cast<Eigen::Index>(soup.points.size()), 3);
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    positions.row(static_cast<Eigen::Index>(i)) << soup.points[i].x(), soup.points[i].y(), soup.points[i].z();
+  return positions;
+}
+
 } // namespace
 
 TEST_CASE("dual Laplacian weights sum to one and the coordinate is normal", "[dual]")
@@ -188,9 +197,7 @@ TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's
   // A plane with an open border: rows only where a face has three neighbours.
   const Soup soup = bumpy_plane(12);
   const Dual_mesh_operator op(dual_triangles(soup), static_cast<Eigen::Index>(soup.points.size()));
-  Positions rest_positions(static_cast<Eigen::Index>(soup.points.size()), 3);
-  for(std::size_t i = 0; i < soup.points.size(); ++i)
-    rest_positions.row(static_cast<Eigen::Index>(i)) << soup.points[i].x(), soup.points[i].y(), soup.points[i].z();
+  const Positions rest_positions = soup_positions(soup);
   const Dual_coordinates rest = op.evaluate(rest_positions);
   const Positions moved = rigidly_moved(rest_positions, 1.7);
   const Dual_coordinates reference = op.evaluate(moved);
@@ -247,9 +254,7 @@ TEST_CASE("the blocked sparse-times-basis product is Eigen's, bit for bit, on an
   using namespace CGAL::Spectral_deformation::internal::Mesh;
   const Soup soup = bumpy_plane(40);
   const Dual_mesh_operator op(dual_triangles(soup), static_cast<Eigen::Index>(soup.points.size()));
-  Positions positions(static_cast<Eigen::Index>(soup.points.size()), 3);
-  for(std::size_t i = 0; i < soup.points.size(); ++i)
-    positions.row(static_cast<Eigen::Index>(i)) << soup.points[i].x(), soup.points[i].y(), soup.points[i].z();
+  const Positions positions = soup_positions(soup);
   const Eigen::SparseMatrix<double> LF = op.laplacian_operator(op.evaluate(positions).weights);
   const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(LF.transpose()) * LF;
   REQUIRE(normal.nonZeros() * 100 > 1000000); // large enough for the threaded path
@@ -283,9 +288,7 @@ TEST_CASE("the reduced matrices are formed in the basis without n-sized intermed
   using namespace CGAL::Spectral_deformation::internal::Mesh;
   const Soup soup = bumpy_plane(40);
   const Dual_mesh_operator op(dual_triangles(soup), static_cast<Eigen::Index>(soup.points.size()));
-  Positions positions(static_cast<Eigen::Index>(soup.points.size()), 3);
-  for(std::size_t i = 0; i < soup.points.size(); ++i)
-    positions.row(static_cast<Eigen::Index>(i)) << soup.points[i].x(), soup.points[i].y(), soup.points[i].z();
+  const Positions positions = soup_positions(soup);
   const Eigen::Matrix<double, Eigen::Dynamic, 3> weights = op.evaluate(positions).weights;
   const Eigen::SparseMatrix<double> LF = op.laplacian_operator(weights);
   const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(LF.transpose()) * LF;
