@@ -25,6 +25,7 @@
 
 #include <CGAL/Spectral_deformation/internal/Memory/Cholmod_huge_page_allocator.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Two_subtree_triangular_solve.h>
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
 #endif
 
 namespace CGAL {
@@ -331,14 +332,17 @@ public:
     // The work arrays of the first solve are allocated then.
     const Spectral_deformation::internal::Memory::Cholmod_huge_page_allocator huge_pages(
         m_process_wide_tuning);
-    if(m_subtree_solve.usable() && concurrent_threads() >= 2)
+    if(m_subtree_solve.usable() && Spectral_deformation::internal::available_threads() >= 2)
       return solve_in_subtrees(B, X) && X.allFinite();
     // Otherwise a simplicial factor is solved column by column without the
     // BLAS: two threads each solve half of the right-hand sides against the
     // shared, read-only factor, with their own CHOLMOD workspace (the
     // supernodal solve, which calls the BLAS, was slower that way).
     const Eigen::Index halves =
-        (Form == CHOLMOD_SIMPLICIAL_FACTOR && B.cols() >= 2 && concurrent_threads() >= 2) ? 2 : 1;
+        (Form == CHOLMOD_SIMPLICIAL_FACTOR && B.cols() >= 2 &&
+         Spectral_deformation::internal::available_threads() >= 2)
+            ? 2
+            : 1;
     bool success[2] = {true, true};
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(2) if(halves == 2)
@@ -455,15 +459,6 @@ private:
       cholmod_free_dense(&e, common);
     }
   };
-
-  static int concurrent_threads()
-  {
-#ifdef _OPENMP
-    return omp_in_parallel() ? 1 : omp_get_max_threads();
-#else
-    return 1;
-#endif
-  }
 
   // X(:, first .. first + count) = A^{-1} B(:, first .. first + count).
   bool solve_columns(const Dense_matrix& B, Eigen::Index first, Eigen::Index count,

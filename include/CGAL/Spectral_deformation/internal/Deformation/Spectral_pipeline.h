@@ -19,6 +19,7 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
 #include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
 
 #include <CGAL/assertions.h>
 
@@ -30,10 +31,6 @@
 #include <thread>
 #include <utility>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace CGAL {
 namespace Spectral_deformation {
@@ -208,16 +205,6 @@ private:
     for(int i : set.constrained)
       prescribed[static_cast<std::size_t>(i)] = 1;
     return prescribed;
-  }
-
-  // OpenMP's thread count: a program built without OpenMP runs on one thread.
-  static int available_threads()
-  {
-#ifdef _OPENMP
-    return omp_in_parallel() ? 1 : omp_get_max_threads();
-#else
-    return 1;
-#endif
   }
 
   // Runs `basis_step` and, with `prescribed` not empty and two threads
