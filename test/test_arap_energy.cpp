@@ -3,11 +3,12 @@
 // The as-rigid-as-possible energy of the reduced iteration (ARAP_ENERGY):
 // rest and rigid motions reproduced, one patch per vertex equal to the full
 // iteration, the energy decreasing, and a twisted thin tube that keeps its
-// section.
+// section; large turns of the handles reached in stages.
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Target_stages.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
 
 #include <catch2/catch.hpp>
@@ -87,6 +88,7 @@ struct Bar_setup
   std::size_t frequencies = 60, patches = 0;
   CGAL::Spectral_smooth_energy energy = CGAL::ARAP_ENERGY;
   CGAL::Spectral_constraint_policy policy = CGAL::EXACT_CONSTRAINTS;
+  double stage_angle = 0; // degrees
 };
 
 Surface_mesh deform_bar(const Bar_setup& setup, const Eigen::Matrix3d& top_rotation, const Eigen::Vector3d& center,
@@ -109,6 +111,7 @@ Surface_mesh deform_bar(const Bar_setup& setup, const Eigen::Matrix3d& top_rotat
   deformation.set_rotation_patches(setup.patches);
   deformation.set_smooth_energy(setup.energy);
   deformation.set_constraint_policy(setup.policy);
+  deformation.set_stage_angle(setup.stage_angle);
   for(SM_vertex v : moved)
   {
     const Point& p = mesh.point(v);
@@ -342,4 +345,143 @@ TEST_CASE("ARAP energy: switched on a prepared region, the basis is kept and the
   const double diagonal = diagonal_of(fresh);
   CHECK((switched - fresh).rowwise().norm().maxCoeff() < 1e-10 * diagonal);
   CHECK((switched - with_dual).rowwise().norm().maxCoeff() > 1e-5 * diagonal);
+}
+
+TEST_CASE("Stages: a group turned far is reached along its rigid path, in stages of at most the stage angle",
+          "[stages]")
+{
+  // Two constrained groups on a bar: the fixed ring (the bottom) and the
+  // top, turned by 100 degrees about the bar's axis and moved up.
+  Surface_mesh mesh = to_mesh<Surface_mesh>(bar(12, 2));
+  const internal::Mesh::Triangle_arrays arrays =
+      internal::Mesh::extract_triangle_arrays(mesh, CGAL::parameters::default_values());
+  const internal::Mesh::Positions& rest = arrays.positions;
+  internal::Deformation::Constraint_set set;
+  for(Eigen::Index i = 0; i < rest.rows(); ++i)
+    if(rest(i, 2) < 0.1)
+      set.constrained.push_back(static_cast<int>(i));
+  set.number_of_fixed = set.constrained.size();
+  for(Eigen::Index i = 0; i < rest.rows(); ++i)
+    if(rest(i, 2) > 4.9)
+      set.constrained.push_back(static_cast<int>(i));
+  set.groups.resize(2);
+  for(std::size_t k = 0; k < set.constrained.size(); ++k)
+    set.groups[k < set.number_of_fixed ? 0 : 1].push_back(static_cast<int>(k));
+  REQUIRE(set.groups[1].size() > 3);
+
+  // The identity as basis: the coefficients are the positions.
+  const Eigen::Index n = rest.rows();
+  const Eigen::MatrixXd basis = Eigen::MatrixXd::Identity(n, n);
+  Eigen::MatrixXd rows(static_cast<Eigen::Index>(set.size()), n);
+  for(std::size_t k = 0; k < set.size(); ++k)
+    rows.row(static_cast<Eigen::Index>(k)) = basis.row(set.constrained[k]);
+  const Eigen::MatrixXd coefficients = rest;
+
+  auto targets_for = [&](double angle, const Eigen::Vector3d& shift) {
+    internal::Mesh::Positions targets(static_cast<Eigen::Index>(set.size()), 3);
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    for(std::size_t k = 0; k < set.size(); ++k)
+    {
+      const Eigen::Vector3d p = rest.row(set.constrained[k]).transpose();
+      targets.row(static_cast<Eigen::Index>(k)) =
+          (k < set.number_of_fixed ? p : Eigen::Vector3d(R * p + shift)).transpose();
+    }
+    return targets;
+  };
+  const double stage = pi / 6;
+  const Eigen::Vector3d shift(0.2, -0.1, 0.5);
+  const internal::Mesh::Positions targets = targets_for(5 * pi / 9, shift);
+  const std::vector<internal::Mesh::Positions> stages =
+      internal::Deformation::intermediate_targets(set, rows, coefficients, rest, rest, targets, stage);
+  // 100 degrees in stages of at most 30: four stages, three before the targets.
+  REQUIRE(stages.size() == 3);
+  for(std::size_t s = 0; s < stages.size(); ++s)
+  {
+    const double fraction = double(s + 1) / 4;
+    // The group's centroid is turned about itself: the stage is the top
+    // turned by a quarter of the angle per stage and moved by as much of
+    // the shift, the fixed ring unchanged.
+    internal::Mesh::Positions top(static_cast<Eigen::Index>(set.groups[1].size()), 3),
+        expected(top.rows(), 3);
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for(int k : set.groups[1])
+      centroid += rest.row(set.constrained[static_cast<std::size_t>(k)]).transpose();
+    centroid /= double(set.groups[1].size());
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(fraction * 5 * pi / 9, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Matrix3d full = Eigen::AngleAxisd(5 * pi / 9, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Vector3d end_centroid = full * centroid + shift;
+    for(std::size_t k = 0; k < set.size(); ++k)
+    {
+      const Eigen::Vector3d p = rest.row(set.constrained[k]).transpose();
+      const Eigen::Vector3d want = k < set.number_of_fixed
+                                       ? p
+                                       : Eigen::Vector3d(R * (p - centroid) + centroid +
+                                                         fraction * (end_centroid - centroid));
+      CHECK((stages[s].row(static_cast<Eigen::Index>(k)).transpose() - want).norm() < 1e-9);
+    }
+  }
+  // A turn within the stage angle, a translation alone, or no stage angle:
+  // reached at once.
+  CHECK(internal::Deformation::intermediate_targets(set, rows, coefficients, rest, rest,
+                                                    targets_for(pi / 7, shift), stage)
+            .empty());
+  CHECK(internal::Deformation::intermediate_targets(set, rows, coefficients, rest, rest,
+                                                    targets_for(0, 10 * shift), stage)
+            .empty());
+  CHECK(internal::Deformation::intermediate_targets(set, rows, coefficients, rest, rest, targets, 0.0).empty());
+  // Measured from where the smooth mesh holds the group now: from a shape
+  // already turned by 80 degrees, 100 degrees is one stage away.
+  internal::Mesh::Positions turned = rest;
+  const Eigen::Matrix3d R80 = Eigen::AngleAxisd(4 * pi / 9, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  for(std::size_t k = set.number_of_fixed; k < set.size(); ++k)
+    turned.row(set.constrained[k]) = (R80 * rest.row(set.constrained[k]).transpose()).transpose();
+  CHECK(internal::Deformation::intermediate_targets(set, rows, turned, rest, rest, targets, stage).empty());
+}
+
+TEST_CASE("Stages: a cylinder bent by 120 degrees in one call does not fold; the setting has a default and a check",
+          "[stages]")
+{
+  Surface_mesh probe = to_mesh<Surface_mesh>(bar(8, 2));
+  Spectral settings(probe);
+  CHECK(settings.stage_angle() == 0);
+  settings.set_stage_angle(45);
+  CHECK(settings.stage_angle() == Approx(45));
+  CHECK_THROWS_AS(settings.set_stage_angle(-1), CGAL::Spectral_deformation_error);
+  CHECK_THROWS_AS(settings.set_stage_angle(std::numeric_limits<double>::quiet_NaN()),
+                  CGAL::Spectral_deformation_error);
+  CHECK(settings.stage_angle() == Approx(45));
+
+  // The cylinder of Botsch and Sorkine at a quarter of its resolution: the
+  // top turned by 120 degrees about an axis across the middle of the bar,
+  // which bends it into a C. In one stage the first solve squashes the bar
+  // and the iteration settles in a folded shape; in stages it bends.
+  Bar_setup setup;
+  setup.radius = 0.5;
+  setup.length = 6.0;
+  setup.low = 0.3;
+  setup.high = 5.7;
+  setup.rings = 59;
+  setup.per_side = 5;
+  setup.energy = CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY;
+  const Surface_mesh rest = to_mesh<Surface_mesh>(bar(setup.rings, setup.per_side, setup.radius, setup.length));
+  const Eigen::Matrix3d bend = Eigen::AngleAxisd(2 * pi / 3, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const Eigen::Vector3d center(0, 0, setup.length / 2);
+  CGAL::Spectral_deformation_report staged_report, single_report;
+  setup.stage_angle = 30;
+  const Surface_mesh staged = deform_bar(setup, bend, center, 10, 1e-4, &staged_report);
+  setup.stage_angle = 0;
+  const Surface_mesh single = deform_bar(setup, bend, center, 10, 1e-4, &single_report);
+  const internal::Mesh::Triangle_arrays rest_arrays =
+      internal::Mesh::extract_triangle_arrays(rest, CGAL::parameters::default_values());
+  const double staged_energy = internal::Deformation::arap_energy(rest_arrays, positions_of(staged));
+  const double single_energy = internal::Deformation::arap_energy(rest_arrays, positions_of(single));
+  INFO("staged: " << staged_report.stages << " stages, " << staged_report.iterations << " solves, "
+                  << folded_pairs(rest, staged) << " folded pairs, ARAP energy " << staged_energy
+                  << "; one stage: " << folded_pairs(rest, single) << " folded pairs, ARAP energy "
+                  << single_energy);
+  CHECK(single_report.stages == 1);
+  CHECK(staged_report.stages == 4);
+  CHECK(folded_pairs(rest, single) > 0);
+  CHECK(folded_pairs(rest, staged) == 0);
+  CHECK(staged_energy < 0.7 * single_energy);
 }

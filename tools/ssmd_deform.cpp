@@ -402,6 +402,8 @@ private:
       deformation->set_number_of_frequencies(m_options.frequencies);
       if(m_options.rotation_patches >= 0)
         deformation->set_rotation_patches(static_cast<std::size_t>(m_options.rotation_patches));
+      if(m_options.stage_angle >= 0)
+        deformation->set_stage_angle(m_options.stage_angle);
       deformation->set_smooth_energy(
           m_options.energy == Deformation_tool::Energy::ARAP ? CGAL::ARAP_ENERGY
           : m_options.energy == Deformation_tool::Energy::DUAL_LAPLACIAN_AND_ARAP
@@ -680,6 +682,8 @@ private:
     m_info << "iterations: " << def.iterations << " ("
            << (def.converged ? "converged" : "stopped at the iteration cap") << ", last relative step "
            << std::setprecision(3) << def.last_step << ")\n";
+    if(def.stages > 1)
+      m_info << "stages: " << def.stages << " (a handle turned by more than the stage angle)\n";
     m_info << "max handle residual: " << std::setprecision(3) << m_report.max_handle_residual
            << " of the bounding-box diagonal of the mesh\n";
   }

@@ -102,6 +102,7 @@ struct Options
   std::size_t frequencies = 100;
   std::size_t rotation_patches = 0;          // of the spectral algorithms; 0: the full iteration
   CGAL::Spectral_smooth_energy smooth_energy = CGAL::DUAL_LAPLACIAN_ENERGY; // of the iteration
+  double stage_angle = -1; // degrees, of the spectral algorithms; negative: the class's default
   bool partition_of_unity_basis = false; // the approximate basis instead of the exact one
   Eigen::Index basis_samples = 0;         // of the approximate basis; 0: its default
   unsigned int long_iterations = 1000;      // of the additional runs
@@ -133,6 +134,8 @@ void print_usage(const char* program)
       << "  --basis-samples k             samples of the partition-of-unity basis (default: its own)\n"
       << "  --smooth-energy E             dual-laplacian (default), arap or dual-laplacian-and-arap:\n"
       << "                                the energy of the iteration\n"
+      << "  --stage-angle DEGREES         the largest turn of a handle per stage of deform()\n"
+      << "                                (default: the class's, 0: one stage)\n"
       << "  --long-iterations N           iteration cap of the additional runs made when the\n"
       << "                                default deform() does not converge (default 1000)\n"
       << "  --large-roi N                 ROIs with more vertices are large (default 20000)\n"
@@ -220,6 +223,14 @@ Options parse_options(int argc, char** argv)
         options.partition_of_unity_basis = false;
       else
         throw std::invalid_argument("--basis: exact or partition-of-unity");
+    }
+    else if(argument == "--stage-angle")
+    {
+      const std::string text = value();
+      char* end = nullptr;
+      options.stage_angle = std::strtod(text.c_str(), &end);
+      if(end == text.c_str() || *end != '\0' || !(options.stage_angle >= 0) || !std::isfinite(options.stage_angle))
+        throw std::invalid_argument("--stage-angle expects an angle of at least 0 degrees, got '" + text + "'");
     }
     else if(argument == "--basis-samples")
       options.basis_samples = to_positive_int(value(), argument);
@@ -393,6 +404,8 @@ std::string spectral_iterations(const CGAL::Spectral_deformation_report& report,
     return "failed";
   std::ostringstream text;
   text << report.iterations;
+  if(report.stages > 1)
+    text << " in " << report.stages << " stages";
   if(linear)
     text << " (no iteration)";
   else if(report.converged)
@@ -431,6 +444,8 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
     deformation.set_number_of_frequencies(options.frequencies);
     deformation.set_rotation_patches(options.rotation_patches);
     deformation.set_smooth_energy(options.smooth_energy);
+    if(options.stage_angle >= 0)
+      deformation.set_stage_angle(options.stage_angle);
     deformation.set_constraint_policy(policy);
     // This program owns its process: the solvers may change process-wide
     // state (OpenBLAS threads, SuiteSparse's allocator) to run faster.
@@ -744,7 +759,9 @@ void write_report(const std::string& filename, const Options& options, const Run
               : std::string("exact"))
       << ", rotation patches "
       << options.rotation_patches
-      << " (0: the full iteration), additional runs `deform("
+      << " (0: the full iteration), stage angle "
+      << (options.stage_angle >= 0 ? fixed(options.stage_angle, 0) + "°" : std::string("0° (default)"))
+      << ", additional runs `deform("
       << options.long_iterations << ", 1e-4)` (CGAL on ROIs above " << options.large_roi
       << " vertices: " << options.arap_large_iterations
       << "); definitions of the columns at the end\n";

@@ -87,6 +87,7 @@ inline py::dict to_dict(const CGAL::Spectral_deformation_report& r)
   d["success"] = r.success;
   d["message"] = r.message;
   d["iterations"] = r.iterations;
+  d["stages"] = r.stages;
   d["last_step"] = r.last_step;
   d["converged"] = r.converged;
   d["max_control_residual"] = r.max_control_residual;
@@ -107,6 +108,7 @@ struct Deformation_settings
   double constraint_weight = -1; // negative: the library's default
   bool single_precision_basis = false;
   long long rotation_patches = -1; // negative: the library's default
+  double stage_angle = -1;         // degrees; negative: the library's default
   std::string basis_cache;       // empty: none
 };
 
@@ -356,6 +358,8 @@ private:
         d.set_single_precision_basis(m_settings.single_precision_basis);
         if(m_settings.rotation_patches >= 0)
           d.set_rotation_patches(static_cast<std::size_t>(m_settings.rotation_patches));
+        if(m_settings.stage_angle >= 0)
+          d.set_stage_angle(m_settings.stage_angle);
       }
       std::vector<Vertex_index> roi_vertices;
       for(std::size_t v = 0; v < m_is_roi.size(); ++v)

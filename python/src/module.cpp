@@ -104,6 +104,9 @@ paper's), 'arap' (the ARAP energy of the smooth mesh: twisted tubes keep
 their section) or 'dual_laplacian_and_arap' (their sum).
 rotation_patches: rotation patches of the iteration (None: the library's
 default; 0: one rotation per dual vertex, the full iteration).
+stage_angle: the largest turn of a handle per stage of the iteration, in
+degrees (None: the library's default, 0: the targets in one stage; 30 with
+'dual_laplacian_and_arap' bends without folds).
 basis_cache: a file to read the basis from, or to write it to once computed.
 progress: a callable receiving a dict after each step of the eigensolver.
 
@@ -114,7 +117,8 @@ Raises ValueError for every input the library rejects, with its message.
                            const py::handle& roi, const py::handle& fixed, long long m,
                            const std::string& policy, const std::string& algorithm,
                            const std::string& energy, const py::object& constraint_weight, bool single_precision_basis,
-                           const py::object& rotation_patches, const py::object& basis_cache,
+                           const py::object& rotation_patches, const py::object& stage_angle,
+                           const py::object& basis_cache,
                            const py::object& progress) {
              Deformation_settings settings;
              if(m < 1)
@@ -140,6 +144,13 @@ Raises ValueError for every input the library rejects, with its message.
                                        std::to_string(k));
                settings.rotation_patches = k;
              }
+             if(!stage_angle.is_none())
+             {
+               const double degrees = stage_angle.cast<double>();
+               if(!(degrees >= 0) || !std::isfinite(degrees))
+                 throw py::value_error("stage_angle must be a finite angle of at least 0 degrees");
+               settings.stage_angle = degrees;
+             }
              if(!basis_cache.is_none())
                settings.basis_cache = py::str(py::module_::import("os").attr("fspath")(basis_cache));
              if(!progress.is_none() && !PyCallable_Check(progress.ptr()))
@@ -151,7 +162,7 @@ Raises ValueError for every input the library rejects, with its message.
            py::arg("algorithm") = "spectral", py::arg("energy") = "dual_laplacian",
            py::arg("constraint_weight") = py::none(),
            py::arg("single_precision_basis") = false, py::arg("rotation_patches") = py::none(),
-           py::arg("basis_cache") = py::none(),
+           py::arg("stage_angle") = py::none(), py::arg("basis_cache") = py::none(),
            py::arg("progress") = py::none())
       .def_property_readonly("number_of_vertices", &Deformation_session::number_of_vertices,
                              "The number of vertices n.")

@@ -79,6 +79,30 @@ def test_rotation_patches(tube_mesh):
                                                                     rotation_patches=-1))
 
 
+def test_stage_angle(tube_mesh):
+    """A turn of 40 degrees takes two stages of at most 30, small changes one; the default is one stage."""
+    V, F, fixed, handles = tube_mesh
+    targets = bent_targets(V, handles)
+
+    def run(**settings):
+        d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=30, **settings)
+        d.set_targets(targets)
+        W = d.deform(iterations=6, tolerance=0.0)
+        assert np.max(np.abs(W[handles] - targets)) <= 1e-9
+        return W, d
+
+    staged, d = run(stage_angle=30)
+    assert d.deform_report["stages"] == 2
+    d.set_targets(targets + np.array([0.0, 0.01, 0.0]))
+    d.deform(iterations=6, tolerance=0.0)
+    assert d.deform_report["stages"] == 1
+    single, d = run()
+    assert d.deform_report["stages"] == 1
+    assert np.max(np.abs(staged - single)) > 0
+    expect_value_error("stage_angle", lambda: ssmd.Deformation(V, F, fixed=fixed, handles=handles,
+                                                               stage_angle=-1))
+
+
 def test_arap_energy(tube_mesh):
     """The ARAP energy: one patch per vertex is its full iteration, and it differs from the default."""
     V, F, fixed, handles = tube_mesh

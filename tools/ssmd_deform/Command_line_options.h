@@ -46,6 +46,7 @@ struct Command_line_options
   bool approximate_basis = false; // CGAL::Partition_of_unity_eigensolver_traits
   std::size_t frequencies = 100;
   long long rotation_patches = -1; // negative: the library's default
+  double stage_angle = -1;         // degrees; negative: the library's default
   unsigned int iterations = 10;
   double tolerance = 1e-4;
   double constraint_weight = 1.0;
@@ -291,6 +292,13 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
       ->check(internal::expects("--rotation-patches", "an integer of at least 0", [](const std::string& v) {
         return internal::is_count_at_least(v, 0, static_cast<std::size_t>(-1));
       }));
+  app.add_option("--stage-angle", options.stage_angle,
+                 "the largest turn of a handle per stage of the spectral iteration, in degrees "
+                 "(default: the library's, 0: the targets in one stage; 30 with --energy "
+                 "dual-laplacian-and-arap bends without folds).")
+      ->option_text("DEGREES")
+      ->check(internal::expects("--stage-angle", "a non-negative finite number",
+                                [](const std::string& v) { return internal::is_non_negative(v, true); }));
   app.add_option("--energy", energy,
                  "what the spectral iteration minimizes: dual-laplacian (default, the paper's dual "
                  "Laplacian editing), arap (the as-rigid-as-possible energy of the smooth mesh: "

@@ -147,6 +147,33 @@ public:
     m_computation.set_smooth_energy(energy);
   }
 
+  /// The largest angle, in degrees, by which one stage of `deform()` turns a
+  /// group of control vertices (default 0: the targets are reached in one
+  /// stage, the paper's iteration).
+  double stage_angle() const { return m_computation.settings().stage_angle * 180 / 3.14159265358979323846; }
+  /// Sets stage_angle(). When the targets turn a connected group of control
+  /// vertices by more than this angle from where the smooth mesh holds it,
+  /// `deform()` moves them there in stages along the group's rigid path
+  /// (each stage but the last iterated three times, then the iterations
+  /// asked for at the targets): one jump from the rest shape to a large
+  /// bend or twist makes the first solve squash the region, and the
+  /// iteration can settle in a folded shape near it. With
+  /// `DUAL_LAPLACIAN_AND_ARAP_ENERGY`, 30 removes the folds of large bends
+  /// (see the manual's section on stages); with the dual Laplacian energy
+  /// alone the results of large bends depend on the number of stages, and
+  /// 0 stays its default. Small target changes, such as the steps of a drag,
+  /// are not staged. `SPECTRAL_LINEAR` does not iterate and ignores it.
+  /// Takes effect at the next `deform()`.
+  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `degrees`
+  /// is negative or not finite.
+  void set_stage_angle(double degrees)
+  {
+    static_assert(is_spectral, "set_stage_angle(): SPATIAL_DUAL_LAPLACIAN has no basis");
+    if(!(degrees >= 0) || !std::isfinite(degrees))
+      throw Error(Error::INVALID_ARGUMENT, "the stage angle must be a finite angle of at least 0 degrees");
+    m_computation.set_stage_angle(degrees * 3.14159265358979323846 / 180);
+  }
+
   /// @}
 
   /// \name Basis cache

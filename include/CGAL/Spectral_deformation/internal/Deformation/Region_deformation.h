@@ -134,6 +134,9 @@ public:
       m_region->pipeline.set_rotation_patches(count);
   }
 
+  /// Takes effect at the next `deform()`.
+  void set_stage_angle(double radians) { m_settings.stage_angle = radians; }
+
   void set_smooth_energy(Spectral_smooth_energy energy)
   {
     if(energy == m_settings.smooth_energy)
@@ -220,8 +223,8 @@ public:
       Region& region = *m_region;
       const Positions targets = constrained_targets(selection);
       Positions& result = m_result;
-      region.pipeline.deform(region, m_constraints, targets, std::max(1u, iterations), tolerance, result,
-                             m_deform_report);
+      region.pipeline.deform(region, m_constraints, targets, std::max(1u, iterations), tolerance,
+                             m_settings.stage_angle, result, m_deform_report);
       report_residuals(result, targets);
       write_result(selection, result);
       // The iteration state changes only with the mesh.

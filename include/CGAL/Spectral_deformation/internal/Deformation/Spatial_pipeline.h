@@ -52,9 +52,12 @@ public:
   void prepare(const Region_geometry&, const Constraint_set& set) { m_solver->preprocess_exact(set.constrained); }
 
   /// The positions of the region for the `targets` of the constrained
-  /// vertices, continuing from the last accepted result.
+  /// vertices, continuing from the last accepted result. The targets are
+  /// reached in one stage: the stage angle of the spectral pipeline is not
+  /// used.
   void deform(const Region_geometry& region, const Constraint_set&, const Positions& targets,
-              unsigned int iterations, double tolerance, Positions& result, Spectral_deformation_report& report)
+              unsigned int iterations, double tolerance, double /* stage_angle */, Positions& result,
+              Spectral_deformation_report& report)
   {
     CGAL_precondition(m_solver != nullptr);
     const auto start = std::chrono::steady_clock::now();

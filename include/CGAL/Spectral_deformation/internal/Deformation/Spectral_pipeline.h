@@ -17,6 +17,7 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Target_stages.h>
 #include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 #include <CGAL/Spectral_deformation/internal/available_threads.h>
@@ -52,6 +53,7 @@ struct Spectral_settings
   bool single_precision_basis = false;
   std::size_t rotation_patches = 0;
   Spectral_smooth_energy smooth_energy = DUAL_LAPLACIAN_ENERGY;
+  double stage_angle = 0; // radians; 0: the targets reached in one stage
 };
 
 /// The steps of the spectral algorithms for one region: the basis, the
@@ -133,17 +135,37 @@ public:
   /// Per target change: the positions of the region for the `targets` of the
   /// constrained vertices (one row each, in the order of `set`), continuing
   /// the iteration from the last accepted result. `accept()` makes it the
-  /// start of the next call.
+  /// start of the next call. A group of control vertices turned by more
+  /// than `stage_angle` (radians, 0: never) from where the smooth mesh
+  /// holds it is reached in stages (`intermediate_targets()`), each but the
+  /// last iterated `stage_iterations` times.
   void deform(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
-              unsigned int iterations, double tolerance, Positions& result, Spectral_deformation_report& report)
+              unsigned int iterations, double tolerance, double stage_angle, Positions& result,
+              Spectral_deformation_report& report)
   {
     CGAL_precondition(targets.rows() == static_cast<Eigen::Index>(set.size()));
     const auto start = std::chrono::steady_clock::now();
-    const Eigen::MatrixXd products = m_constraint_products.product(set, m_solver.constrained_rows(), targets);
     m_pending = (m_has_solution && Iterated) ? m_coefficients : m_solver.rest_coefficients();
+    unsigned int solves = 0;
+    report.stages = 1;
+    if(Iterated)
+    {
+      const std::vector<Positions> stages =
+          intermediate_targets(set, m_solver.constrained_rows(), m_pending, region.arrays.positions,
+                               m_solver.smooth_rest(), targets, stage_angle);
+      for(const Positions& stage : stages)
+      {
+        const Iteration_report step = m_solver.solve_with_constraint_products(
+            m_constraint_products.product(set, m_solver.constrained_rows(), stage), m_pending,
+            static_cast<int>(stage_iterations) - 1, tolerance);
+        solves += static_cast<unsigned int>(step.iterations + 1);
+      }
+      report.stages = static_cast<unsigned int>(stages.size() + 1);
+    }
+    const Eigen::MatrixXd products = m_constraint_products.product(set, m_solver.constrained_rows(), targets);
     const Iteration_report iteration = m_solver.solve_with_constraint_products(
         products, m_pending, Iterated ? static_cast<int>(iterations) - 1 : 0, tolerance);
-    report.iterations = static_cast<unsigned int>(iteration.iterations + 1);
+    report.iterations = solves + static_cast<unsigned int>(iteration.iterations + 1);
     report.last_step = iteration.last_step;
     report.converged = iteration.converged;
     report.solve_seconds = seconds_since(start);
@@ -159,6 +181,9 @@ public:
                                          "deformed mesh is degenerate)");
     report.detail_transfer_seconds = seconds_since(transfer_start);
   }
+
+  /// The solves of each stage before the last in `deform()`.
+  static constexpr unsigned int stage_iterations = 3;
 
   /// The result of the last `deform()` was written: the iteration goes on from it.
   void accept()
