@@ -165,7 +165,7 @@ TEST_CASE("ARAP energy: rest targets give the rest shape, a rigid motion of all 
     }
 }
 
-TEST_CASE("ARAP energy: one rotation patch per vertex is the full iteration; fewer patches approach it",
+TEST_CASE("ARAP energy: one rotation patch per vertex is the full iteration, fewer patches approach it",
           "[arap][patches]")
 {
   const Eigen::Matrix3d bend = Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()).toRotationMatrix();
@@ -438,7 +438,7 @@ TEST_CASE("Stages: a group turned far is reached along its rigid path, in stages
   CHECK(internal::Deformation::intermediate_targets(set, rows, turned, rest, rest, targets, stage).empty());
 }
 
-TEST_CASE("Stages: a cylinder bent by 120 degrees in one call does not fold; the setting has a default and a check",
+TEST_CASE("Stages: a cylinder bent by 120 degrees in one call does not fold, and the stage angle is checked",
           "[stages]")
 {
   Surface_mesh probe = to_mesh<Surface_mesh>(bar(8, 2));

@@ -278,7 +278,7 @@ TEST_CASE("a rigid motion of all constraints moves the mesh rigidly", "[deformat
   }
 }
 
-TEST_CASE("exact policy: controls on target, outside the ROI untouched; soft policy reports residuals",
+TEST_CASE("exact policy: controls on target, outside the ROI untouched, soft policy reports residuals",
           "[deformation]")
 {
   Surface_mesh mesh = to_mesh<Surface_mesh>(bar(24, 3));
@@ -347,7 +347,7 @@ TEST_CASE("exact policy: controls on target, outside the ROI untouched; soft pol
   }
 }
 
-TEST_CASE("iteration lowers the ARAP energy of a twist; the spectral result approaches the spatial one",
+TEST_CASE("iteration lowers the ARAP energy of a twist, the spectral result approaches the spatial one",
           "[deformation]")
 {
   const Soup soup = bar(24, 3);
@@ -610,7 +610,7 @@ TEST_CASE("basis cache: saved, loaded, handed in, refused when stale", "[deforma
   }
 }
 
-TEST_CASE("the region numbers its vertices along the surface; a basis in the mesh's order is reordered",
+TEST_CASE("the region numbers its vertices along the surface, a basis in the mesh's order is reordered",
           "[deformation][io]")
 {
   // Loop subdivision appends the new vertices: neighbours get distant indices.
@@ -934,7 +934,7 @@ TEST_CASE("rotation patches are connected, cover every dual vertex, one surface 
   }
 }
 
-TEST_CASE("one rotation patch per dual vertex is the full iteration; fewer patches approach it",
+TEST_CASE("one rotation patch per dual vertex is the full iteration, fewer patches approach it",
           "[deformation][patches]")
 {
   const Eigen::Matrix3d bend = Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()).toRotationMatrix();
