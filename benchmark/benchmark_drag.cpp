@@ -56,6 +56,7 @@ struct Options
   int cgal_drags_large = 5;          // above large_mesh vertices
   std::size_t large_mesh = 300000;
   bool skip_cgal = false;
+  bool sum_energy = false; // also every exact-basis variant with the sum of the energies and stages of 30°
 };
 
 void print_usage(const char* program)
@@ -78,7 +79,9 @@ void print_usage(const char* program)
             << "  --basis-samples k      samples of the partition-of-unity basis (default: its own)\n"
             << "  --constraint-changes N after the path, N new constraint sets (a handle vertex\n"
             << "                         released, then taken again), each timed (default 0)\n"
-            << "  --skip-cgal            no CGAL ARAP\n";
+            << "  --skip-cgal            no CGAL ARAP\n"
+            << "  --sum-energy           also the exact-basis variants with\n"
+            << "                         DUAL_LAPLACIAN_AND_ARAP_ENERGY and stages of 30 degrees\n";
 }
 
 template <class T>
@@ -124,6 +127,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--cgal-drags-large") o.cgal_drags_large = std::stoi(value());
     else if(a == "--large-mesh") o.large_mesh = std::stoul(value());
     else if(a == "--skip-cgal") o.skip_cgal = true;
+    else if(a == "--sum-energy") o.sum_energy = true;
     else
       throw std::invalid_argument("unknown option " + a);
   }
@@ -189,14 +193,15 @@ std::vector<double> column(const std::vector<Drag>& drags, Member member)
 
 template <class Deformation = Spectral>
 Variant_result run_package(const Deformation_case& c, const Case_geometry& g, const Options& o,
-                           std::size_t patches)
+                           std::size_t patches, bool sum_energy = false)
 {
   constexpr bool approximate = std::is_same_v<Deformation, Spectral_partition_of_unity>;
   Variant_result result;
   result.patches = patches;
   result.name = std::string(approximate ? "spectral, partition-of-unity basis, " : "spectral, ") +
                 (approximate && o.basis_samples > 0 ? std::to_string(o.basis_samples) + " samples, " : "") +
-                (patches == 0 ? "full iteration" : std::to_string(patches) + " patches");
+                (patches == 0 ? "full iteration" : std::to_string(patches) + " patches") +
+                (sum_energy ? ", sum of the energies, stages of 30°" : "");
   reset_peak_resident_size();
   result.start_gib = double(proc_field_kib("/proc/self/status", "VmRSS")) / (1024.0 * 1024.0);
   Mesh mesh = c.mesh;
@@ -217,6 +222,11 @@ Variant_result run_package(const Deformation_case& c, const Case_geometry& g, co
   }
   d.set_number_of_frequencies(o.frequencies);
   d.set_rotation_patches(patches);
+  if(sum_energy)
+  {
+    d.set_smooth_energy(CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY);
+    d.set_stage_angle(30);
+  }
   d.insert_roi_vertices(c.roi.begin(), c.roi.end());
   d.insert_control_vertices(c.handles.begin(), c.handles.end());
   for(int i = 1; i <= o.drags; ++i)
@@ -351,6 +361,12 @@ int main(int argc, char** argv)
       results.push_back(run_package(c, g, o, 0));
       for(std::size_t k : o.patches)
         results.push_back(run_package(c, g, o, k));
+      if(o.sum_energy)
+      {
+        results.push_back(run_package(c, g, o, 0, true));
+        for(std::size_t k : o.patches)
+          results.push_back(run_package(c, g, o, k, true));
+      }
     }
     for(std::size_t k : o.approximate_patches)
       results.push_back(run_package<Spectral_partition_of_unity>(c, g, o, k));
