@@ -429,6 +429,9 @@ TEST_CASE("Stages: a group turned far is reached along its rigid path, in stages
                                                     targets_for(0, 10 * shift), stage)
             .empty());
   CHECK(internal::Deformation::intermediate_targets(set, rows, coefficients, rest, rest, targets, 0.0).empty());
+  // A vanishing stage angle: at most 180 stages, not an endless loop.
+  CHECK(internal::Deformation::intermediate_targets(set, rows, coefficients, rest, rest, targets, 1e-300).size() ==
+        std::size_t(internal::Deformation::max_stages - 1));
   // Measured from where the smooth mesh holds the group now: from a shape
   // already turned by 80 degrees, 100 degrees is one stage away.
   internal::Mesh::Positions turned = rest;

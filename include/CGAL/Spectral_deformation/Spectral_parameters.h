@@ -162,7 +162,8 @@ public:
   /// (see the manual's section on stages); with the dual Laplacian energy
   /// alone the results of large bends depend on the number of stages, and
   /// 0 stays its default. Small target changes, such as the steps of a drag,
-  /// are not staged. `SPECTRAL_LINEAR` does not iterate and ignores it.
+  /// are not staged. An angle below one degree still makes at most 180
+  /// stages. `SPECTRAL_LINEAR` does not iterate and ignores it.
   /// Takes effect at the next `deform()`.
   /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `degrees`
   /// is negative or not finite.

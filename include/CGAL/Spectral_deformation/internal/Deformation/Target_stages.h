@@ -25,6 +25,10 @@ namespace Deformation {
 
 using Mesh::Positions;
 
+/// The largest number of stages `intermediate_targets()` makes: a stage of
+/// one degree for a half turn.
+constexpr int max_stages = 180;
+
 /// Intermediate targets on the way to targets that turn a group of control
 /// vertices by a large angle from where the smooth mesh holds it now.
 ///
@@ -46,8 +50,8 @@ using Mesh::Positions;
 /// exp(τ log(R₁R₀ᵀ)) R₀, τ = s/S, about its centroid moved a fraction τ of
 /// the way, plus τ r_i. S is the smallest count that keeps every group's
 /// turn per stage at most `stage_angle`; the result holds the S − 1 stages
-/// before the targets themselves (none when S ≤ 1). Translations alone are
-/// not staged.
+/// before the targets themselves (none when S ≤ 1), S at most
+/// `max_stages`. Translations alone are not staged.
 ///
 /// `rest` and `smooth_rest` are the rest positions of the region's detailed
 /// and smooth meshes, `targets` one row per constrained vertex of `set`.
@@ -108,8 +112,10 @@ inline std::vector<Positions> intermediate_targets(const Constraint_set& set, co
   }
   // A turn within a hundredth of a stage of a whole number of stages (a
   // handle turned by 120° with stages of 30°, fitted to rounding) takes
-  // that number.
-  const int count = static_cast<int>(std::ceil(largest_turn / stage_angle - 0.01));
+  // that number. Turns are at most 180°, and stages below 1° buy nothing:
+  // at most `max_stages`, whatever tiny angle is asked for.
+  const double stages_needed = std::ceil(largest_turn / stage_angle - 0.01);
+  const int count = static_cast<int>((std::min)(stages_needed, double(max_stages)));
   for(int s = 1; s < count; ++s)
   {
     const double fraction = double(s) / double(count);
