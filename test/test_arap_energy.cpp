@@ -132,7 +132,8 @@ TEST_CASE("ARAP energy: the smooth energy is a setting with a default and a chec
 {
   Surface_mesh mesh = to_mesh<Surface_mesh>(bar(8, 2));
   Spectral deformation(mesh);
-  CHECK(deformation.smooth_energy() == CGAL::DUAL_LAPLACIAN_ENERGY);
+  CHECK(deformation.smooth_energy() == CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY);
+  CHECK(deformation.rotation_patches() == 1000);
   deformation.set_smooth_energy(CGAL::ARAP_ENERGY);
   CHECK(deformation.smooth_energy() == CGAL::ARAP_ENERGY);
   CHECK_THROWS_AS(deformation.set_smooth_energy(static_cast<CGAL::Spectral_smooth_energy>(7)),
@@ -321,6 +322,10 @@ TEST_CASE("ARAP energy: switched on a prepared region, the basis is kept and the
       top.push_back(v);
   }
   deformation.set_number_of_frequencies(60);
+  // The settings of Bar_setup, with the dual Laplacian energy first.
+  deformation.set_smooth_energy(CGAL::DUAL_LAPLACIAN_ENERGY);
+  deformation.set_rotation_patches(0);
+  deformation.set_stage_angle(0);
   for(SM_vertex v : top)
   {
     const Point& p = mesh.point(v);
@@ -446,7 +451,7 @@ TEST_CASE("Stages: a cylinder bent by 120 degrees in one call does not fold, and
 {
   Surface_mesh probe = to_mesh<Surface_mesh>(bar(8, 2));
   Spectral settings(probe);
-  CHECK(settings.stage_angle() == 0);
+  CHECK(settings.stage_angle() == Approx(30));
   settings.set_stage_angle(45);
   CHECK(settings.stage_angle() == Approx(45));
   CHECK_THROWS_AS(settings.set_stage_angle(-1), CGAL::Spectral_deformation_error);

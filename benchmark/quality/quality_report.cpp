@@ -87,6 +87,8 @@
 namespace {
 
 using namespace ssmd_benchmark;
+// The deformation class's default settings (internal: the report prints them).
+typedef CGAL::Spectral_deformation::internal::Deformation::Spectral_settings Default_settings;
 
 // ----------------------------------------------------------------------------
 // Command line
@@ -100,9 +102,10 @@ struct Options
   std::string mesh_output_directory; // empty: no mesh is written
   std::vector<std::string> only;     // names of the cases to run; empty: all
   std::size_t frequencies = 100;
-  std::size_t rotation_patches = 0;          // of the spectral algorithms; 0: the full iteration
-  CGAL::Spectral_smooth_energy smooth_energy = CGAL::DUAL_LAPLACIAN_ENERGY; // of the iteration
-  double stage_angle = -1; // degrees, of the spectral algorithms; negative: the class's default
+  // The class's defaults, read from its settings so that the report follows them.
+  std::size_t rotation_patches = Default_settings::default_rotation_patches; // 0: the full iteration
+  CGAL::Spectral_smooth_energy smooth_energy = Default_settings().smooth_energy; // of the iteration
+  double stage_angle = Default_settings::default_stage_angle * 180 / 3.14159265358979323846; // degrees
   bool partition_of_unity_basis = false; // the approximate basis instead of the exact one
   Eigen::Index basis_samples = 0;         // of the approximate basis; 0: its default
   unsigned int long_iterations = 1000;      // of the additional runs
@@ -128,14 +131,15 @@ void print_usage(const char* program)
          ")\n"
       << "  --only a,b,...                run only the cases of these names\n"
       << "  --frequencies m               basis size of the spectral algorithms (default 100)\n"
-      << "  --rotation-patches k          rotation patches of the iteration (default 0: full)\n"
+      << "  --rotation-patches k          rotation patches of the iteration (default: the\n"
+      << "                                class's, " << Default_settings::default_rotation_patches << "; 0: the full iteration)\n"
       << "  --basis B                     exact (default: Block_lanczos_eigensolver_traits) or\n"
       << "                                partition-of-unity (Partition_of_unity_eigensolver_traits)\n"
       << "  --basis-samples k             samples of the partition-of-unity basis (default: its own)\n"
-      << "  --smooth-energy E             dual-laplacian (default), arap or dual-laplacian-and-arap:\n"
-      << "                                the energy of the iteration\n"
+      << "  --smooth-energy E             dual-laplacian-and-arap (default), dual-laplacian or\n"
+      << "                                arap: the energy of the iteration\n"
       << "  --stage-angle DEGREES         the largest turn of a handle per stage of deform()\n"
-      << "                                (default: the class's, 0: one stage)\n"
+      << "                                (default: the class's, 30; 0: one stage)\n"
       << "  --long-iterations N           iteration cap of the additional runs made when the\n"
       << "                                default deform() does not converge (default 1000)\n"
       << "  --large-roi N                 ROIs with more vertices are large (default 20000)\n"
@@ -444,8 +448,7 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
     deformation.set_number_of_frequencies(options.frequencies);
     deformation.set_rotation_patches(options.rotation_patches);
     deformation.set_smooth_energy(options.smooth_energy);
-    if(options.stage_angle >= 0)
-      deformation.set_stage_angle(options.stage_angle);
+    deformation.set_stage_angle(options.stage_angle);
     deformation.set_constraint_policy(policy);
     // This program owns its process: the solvers may change process-wide
     // state (OpenBLAS threads, SuiteSparse's allocator) to run faster.
@@ -760,7 +763,7 @@ void write_report(const std::string& filename, const Options& options, const Run
       << ", rotation patches "
       << options.rotation_patches
       << " (0: the full iteration), stage angle "
-      << (options.stage_angle >= 0 ? fixed(options.stage_angle, 0) + "°" : std::string("0° (default)"))
+      << fixed(options.stage_angle, 0) << "°"
       << ", additional runs `deform("
       << options.long_iterations << ", 1e-4)` (CGAL on ROIs above " << options.large_roi
       << " vertices: " << options.arap_large_iterations

@@ -24,6 +24,7 @@ for basis in exact partition-of-unity; do
   "${build_dir}/benchmark/quality/quality_report" --output "${work}/${basis}.md" \
     --meshes "${build_dir}/data/meshes" --cases "${repository}/benchmark/quality/cases" \
     --botsch08 "${botsch08}" --only tube_twist,plane --basis "${basis}" \
+    --smooth-energy dual-laplacian --stage-angle 0 --rotation-patches 0 \
     --mesh-output "${work}/${basis}" > /dev/null
 done
 colour() { # NAME DIR CASE ALGORITHM

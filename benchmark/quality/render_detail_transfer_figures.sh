@@ -8,6 +8,8 @@
 # one by the current revision, each run with
 #   --only armadillo_hand_raise,strip_bend,tube_twist --levels 0
 #   --case-levels armadillo_hand_raise=2 --mesh-output DIR
+# and, for the current revision, --smooth-energy dual-laplacian --stage-angle 0
+# --rotation-patches 0 (the iteration the figures show)
 #
 # Usage: benchmark/quality/render_detail_transfer_figures.sh BEFORE_DIR AFTER_DIR
 set -euo pipefail

@@ -19,6 +19,7 @@ for patches in 0 1000; do
   "${build_dir}/benchmark/quality/quality_report" --output "${work}/k${patches}.md" \
     --meshes "${build_dir}/data/meshes" --cases "${repository}/benchmark/quality/cases" \
     --only armadillo_arm --case-levels armadillo_arm=1 --rotation-patches "${patches}" \
+    --smooth-energy dual-laplacian --stage-angle 0 \
     --mesh-output "${work}/k${patches}" > /dev/null
 done
 colour() { # NAME DIR CASE

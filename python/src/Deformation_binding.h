@@ -104,7 +104,7 @@ struct Deformation_settings
   std::string algorithm = "spectral";
   std::size_t frequencies = 100;
   std::string policy = "exact";
-  std::string energy = "dual_laplacian";
+  std::string energy = "dual_laplacian_and_arap";
   double constraint_weight = -1; // negative: the library's default
   bool single_precision_basis = false;
   long long rotation_patches = -1; // negative: the library's default

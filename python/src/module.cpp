@@ -99,14 +99,14 @@ to roi; the two must not overlap). m: number of manifold harmonics.
 policy: 'exact' (handles land exactly on their targets) or 'soft'.
 algorithm: 'spectral' (default), 'linear' or 'spatial'. constraint_weight:
 weight of the handles in the reduced system (None: the library's default, 1).
-energy: what the spectral iteration minimizes, 'dual_laplacian' (default, the
-paper's), 'arap' (the ARAP energy of the smooth mesh: twisted tubes keep
-their section) or 'dual_laplacian_and_arap' (their sum).
+energy: what the spectral iteration minimizes, 'dual_laplacian_and_arap'
+(default, the sum of the two), 'dual_laplacian' (the paper's: open sheets
+bend with the least stretch) or 'arap' (the ARAP energy of the smooth mesh).
 rotation_patches: rotation patches of the iteration (None: the library's
-default; 0: one rotation per dual vertex, the full iteration).
+default, 1000; 0: one rotation per dual vertex, the full iteration).
 stage_angle: the largest turn of a handle per stage of the iteration, in
-degrees (None: the library's default, 0: the targets in one stage; 30 with
-'dual_laplacian_and_arap' bends without folds).
+degrees (None: the library's default, 30, with which large bends do not
+fold; 0: the targets in one stage).
 basis_cache: a file to read the basis from, or to write it to once computed.
 progress: a callable receiving a dict after each step of the eigensolver.
 
@@ -159,7 +159,7 @@ Raises ValueError for every input the library rejects, with its message.
            }),
            py::arg("V"), py::arg("F"), py::kw_only(), py::arg("handles"), py::arg("roi") = py::none(),
            py::arg("fixed") = py::none(), py::arg("m") = 100, py::arg("policy") = "exact",
-           py::arg("algorithm") = "spectral", py::arg("energy") = "dual_laplacian",
+           py::arg("algorithm") = "spectral", py::arg("energy") = "dual_laplacian_and_arap",
            py::arg("constraint_weight") = py::none(),
            py::arg("single_precision_basis") = false, py::arg("rotation_patches") = py::none(),
            py::arg("stage_angle") = py::none(), py::arg("basis_cache") = py::none(),

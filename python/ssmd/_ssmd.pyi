@@ -33,9 +33,11 @@ class Deformation:
         m: int = 100,
         policy: str = "exact",
         algorithm: str = "spectral",
+        energy: str = "dual_laplacian_and_arap",
         constraint_weight: Optional[float] = None,
         single_precision_basis: bool = False,
         rotation_patches: Optional[int] = None,
+        stage_angle: Optional[float] = None,
         basis_cache: Optional[PathLike] = None,
         progress: Optional[ProgressCallback] = None,
     ) -> None: ...

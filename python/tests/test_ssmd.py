@@ -80,7 +80,7 @@ def test_rotation_patches(tube_mesh):
 
 
 def test_stage_angle(tube_mesh):
-    """A turn of 40 degrees takes two stages of at most 30, small changes one; the default is one stage."""
+    """A turn of 40 degrees takes two stages of at most 30 (the default), small changes one; 0 is one stage."""
     V, F, fixed, handles = tube_mesh
     targets = bent_targets(V, handles)
 
@@ -96,7 +96,10 @@ def test_stage_angle(tube_mesh):
     d.set_targets(targets + np.array([0.0, 0.01, 0.0]))
     d.deform(iterations=6, tolerance=0.0)
     assert d.deform_report["stages"] == 1
-    single, d = run()
+    default, d = run()
+    assert d.deform_report["stages"] == 2
+    assert np.array_equal(default, staged)
+    single, d = run(stage_angle=0)
     assert d.deform_report["stages"] == 1
     assert np.max(np.abs(staged - single)) > 0
     expect_value_error("stage_angle", lambda: ssmd.Deformation(V, F, fixed=fixed, handles=handles,

@@ -42,7 +42,7 @@ struct Command_line_options
   std::string basis_cache_file;     // empty: a file of the user's cache folder
   Algorithm algorithm = Algorithm::SPECTRAL;
   Policy policy = Policy::EXACT;
-  Energy energy = Energy::DUAL_LAPLACIAN;
+  Energy energy = Energy::DUAL_LAPLACIAN_AND_ARAP;
   bool approximate_basis = false; // CGAL::Partition_of_unity_eigensolver_traits
   std::size_t frequencies = 100;
   long long rotation_patches = -1; // negative: the library's default
@@ -254,7 +254,7 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
 {
   Command_line_options options;
   std::vector<std::string> files;
-  std::string algorithm = "spectral", policy = "exact", energy = "dual-laplacian", basis = "exact";
+  std::string algorithm = "spectral", policy = "exact", energy = "dual-laplacian-and-arap", basis = "exact";
 
   CLI::App app(internal::description_text(), "ssmd_deform");
   app.formatter(std::make_shared<internal::Help_formatter>());
@@ -286,23 +286,24 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
         return internal::is_count_at_least(v, 1, static_cast<std::size_t>(-1));
       }));
   app.add_option("--rotation-patches", options.rotation_patches,
-                 "rotation patches of the iteration (default: the library's; 0: one rotation per "
-                 "dual vertex, the full iteration).")
+                 "rotation patches of the iteration (default: the library's, 1000; 0: one rotation "
+                 "per dual vertex, the full iteration).")
       ->option_text("K")
       ->check(internal::expects("--rotation-patches", "an integer of at least 0", [](const std::string& v) {
         return internal::is_count_at_least(v, 0, static_cast<std::size_t>(-1));
       }));
   app.add_option("--stage-angle", options.stage_angle,
                  "the largest turn of a handle per stage of the spectral iteration, in degrees "
-                 "(default: the library's, 0: the targets in one stage; 30 with --energy "
-                 "dual-laplacian-and-arap bends without folds).")
+                 "(default: the library's, 30, with which large bends do not fold; 0: the targets "
+                 "in one stage).")
       ->option_text("DEGREES")
       ->check(internal::expects("--stage-angle", "a non-negative finite number",
                                 [](const std::string& v) { return internal::is_non_negative(v, true); }));
   app.add_option("--energy", energy,
-                 "what the spectral iteration minimizes: dual-laplacian (default, the paper's dual "
-                 "Laplacian editing), arap (the as-rigid-as-possible energy of the smooth mesh: "
-                 "twisted tubes keep their section) or dual-laplacian-and-arap (their sum).")
+                 "what the spectral iteration minimizes: dual-laplacian-and-arap (default, the sum "
+                 "of the two), dual-laplacian (the paper's dual Laplacian editing: open sheets "
+                 "bend with the least stretch) or arap (the as-rigid-as-possible energy of the "
+                 "smooth mesh).")
       ->option_text("NAME")
       ->check(internal::expects("--energy", "dual-laplacian, arap or dual-laplacian-and-arap",
                                 [](const std::string& v) {
@@ -406,9 +407,9 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
                       : algorithm == "spatial" ? Algorithm::SPATIAL
                                                : Algorithm::SPECTRAL;
   options.policy = policy == "soft" ? Policy::SOFT : Policy::EXACT;
-  options.energy = energy == "arap"                      ? Energy::ARAP
-                   : energy == "dual-laplacian-and-arap" ? Energy::DUAL_LAPLACIAN_AND_ARAP
-                                                         : Energy::DUAL_LAPLACIAN;
+  options.energy = energy == "arap"             ? Energy::ARAP
+                   : energy == "dual-laplacian" ? Energy::DUAL_LAPLACIAN
+                                                : Energy::DUAL_LAPLACIAN_AND_ARAP;
   options.approximate_basis = (basis == "approximate");
   options.use_cache = !no_cache;
 

@@ -15,7 +15,10 @@ namespace CGAL {
 enum Spectral_deformation_algorithm_tag {
   /// The paper's algorithm (the default): dual Laplacian editing in the space
   /// of the first `m` manifold harmonics, iterated so that the dual Laplacian
-  /// coordinates follow the local rotations, then detail transfer.
+  /// coordinates follow the local rotations, then detail transfer. The
+  /// energy of the iteration, its stages and its rotation patches are
+  /// settings (`Spectral_parameters`); by default the iteration minimizes
+  /// the sum of the dual Laplacian and ARAP energies.
   SPECTRAL_DUAL_LAPLACIAN,
   /// The same reduced system solved once with the dual Laplacian coordinates
   /// of the rest shape, then detail transfer: the linear spectral solution
@@ -63,9 +66,11 @@ enum Spectral_constraint_policy {
 /// algorithm minimizes in the space of the basis, with the constraints
 /// (`Spectral_parameters::set_smooth_energy()`).
 enum Spectral_smooth_energy {
-  /// The paper's (the default): dual Laplacian editing. Each iteration turns
+  /// The paper's: dual Laplacian editing. Each iteration turns
   /// the dual Laplacian coordinates of the smooth rest mesh to the normals
   /// of the current smooth mesh and solves the reduced least squares system.
+  /// Open sheets bend with the least stretch; thin tubes pinch when twisted
+  /// and fold when bent far.
   DUAL_LAPLACIAN_ENERGY,
   /// The as-rigid-as-possible energy of the smooth mesh (Sorkine and Alexa
   /// 2007) minimized in the space of the basis: each iteration fits a
@@ -76,11 +81,12 @@ enum Spectral_smooth_energy {
   /// twisted tubes keep their section; bends of open sheets spread less
   /// evenly within ten iterations.
   ARAP_ENERGY,
-  /// The sum of the two, the ARAP energy scaled so that the matrices of the
-  /// two reduced systems have the same trace: twisted tubes keep their
+  /// The default: the sum of the two, the ARAP energy scaled so that the
+  /// matrices of the two reduced systems have the same trace: twisted tubes keep their
   /// section as with `ARAP_ENERGY`, and twists and bends spread along the
-  /// shape almost as with `DUAL_LAPLACIAN_ENERGY`. Each iteration does the
-  /// work of both.
+  /// shape almost as with `DUAL_LAPLACIAN_ENERGY`; with stages
+  /// (`Spectral_parameters::set_stage_angle()`), large bends do not fold.
+  /// Each iteration does the work of both.
   DUAL_LAPLACIAN_AND_ARAP_ENERGY
 };
 
