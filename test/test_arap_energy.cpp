@@ -89,6 +89,7 @@ struct Bar_setup
   CGAL::Spectral_smooth_energy energy = CGAL::ARAP_ENERGY;
   CGAL::Spectral_constraint_policy policy = CGAL::EXACT_CONSTRAINTS;
   double stage_angle = 0; // degrees
+  bool preserve_volume = false;
 };
 
 Surface_mesh deform_bar(const Bar_setup& setup, const Eigen::Matrix3d& top_rotation, const Eigen::Vector3d& center,
@@ -112,6 +113,7 @@ Surface_mesh deform_bar(const Bar_setup& setup, const Eigen::Matrix3d& top_rotat
   deformation.set_smooth_energy(setup.energy);
   deformation.set_constraint_policy(setup.policy);
   deformation.set_stage_angle(setup.stage_angle);
+  deformation.set_volume_preservation(setup.preserve_volume);
   for(SM_vertex v : moved)
   {
     const Point& p = mesh.point(v);
@@ -492,4 +494,110 @@ TEST_CASE("Stages: a cylinder bent by 120 degrees in one call does not fold, and
   CHECK(folded_pairs(rest, single) > 0);
   CHECK(folded_pairs(rest, staged) == 0);
   CHECK(staged_energy < 0.7 * single_energy);
+}
+
+TEST_CASE("Volume preservation: a twisted tube keeps its volume and section, rigid motions and open sheets are untouched",
+          "[volume]")
+{
+  Surface_mesh probe = to_mesh<Surface_mesh>(bar(8, 2));
+  Spectral settings(probe);
+  CHECK_FALSE(settings.volume_preservation());
+  settings.set_volume_preservation(true);
+  CHECK(settings.volume_preservation());
+
+  // The tube of the test above, with the defaults of the iteration, both
+  // policies: the volume is the rest volume to round-off, the handles are
+  // exact (exact policy), and the mid-length section is kept.
+  Bar_setup setup;
+  setup.radius = 0.1;
+  setup.length = 1.0;
+  setup.low = 0.05;
+  setup.high = 0.95;
+  setup.rings = 100;
+  setup.per_side = 8;
+  setup.frequencies = 60;
+  setup.energy = CGAL::DUAL_LAPLACIAN_AND_ARAP_ENERGY;
+  setup.patches = 1000;
+  setup.stage_angle = 30;
+  const Surface_mesh rest = to_mesh<Surface_mesh>(bar(setup.rings, setup.per_side, setup.radius, setup.length));
+  const double rest_volume = volume_of(rest);
+  const Eigen::MatrixXd rest_positions = positions_of(rest);
+  const Eigen::Matrix3d twist = Eigen::AngleAxisd(2 * pi / 3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  auto mid_radius = [&](const Eigen::MatrixXd& x) {
+    double radius = 0;
+    int count = 0;
+    for(Eigen::Index i = 0; i < x.rows(); ++i)
+      if(std::abs(rest_positions(i, 2) - 0.5) < 0.02)
+      {
+        radius += x.row(i).head<2>().norm();
+        ++count;
+      }
+    return radius / count;
+  };
+  for(CGAL::Spectral_constraint_policy policy : {CGAL::EXACT_CONSTRAINTS, CGAL::SOFT_CONSTRAINTS})
+  {
+    setup.policy = policy;
+    setup.preserve_volume = false;
+    CGAL::Spectral_deformation_report free_report, kept_report;
+    const Eigen::MatrixXd free = positions_of(deform_bar(setup, twist, Eigen::Vector3d::Zero(), 10, 0.0, &free_report));
+    setup.preserve_volume = true;
+    const Eigen::MatrixXd kept = positions_of(deform_bar(setup, twist, Eigen::Vector3d::Zero(), 10, 0.0, &kept_report));
+    const auto volume = [&](const Eigen::MatrixXd& x) {
+      Surface_mesh copy = rest;
+      for(auto v : copy.vertices())
+        copy.point(v) = Point(x(v.idx(), 0), x(v.idx(), 1), x(v.idx(), 2));
+      return volume_of(copy);
+    };
+    INFO("policy " << policy << ": volume kept " << volume(free) / rest_volume << " without, " << volume(kept) / rest_volume
+                   << " with; mid-length radius " << mid_radius(free) << " and " << mid_radius(kept));
+    CHECK(volume(free) < 0.97 * rest_volume);
+    CHECK(std::abs(volume(kept) / rest_volume - 1) < 1e-9);
+    CHECK(std::abs(mid_radius(kept) - 0.1) < std::abs(mid_radius(free) - 0.1));
+    CHECK(std::abs(mid_radius(kept) - 0.1) < 0.005);
+    CHECK_FALSE(free_report.volume_preserved);
+    CHECK(kept_report.volume_preserved);
+    if(policy == CGAL::EXACT_CONSTRAINTS)
+      CHECK(kept_report.max_control_residual == 0.0);
+  }
+
+  // A rigid motion of every control vertex keeps the volume: the result is
+  // the rigid image, as without the setting.
+  setup.policy = CGAL::EXACT_CONSTRAINTS;
+  setup.preserve_volume = true;
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(pi / 5, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::MatrixXd moved =
+      positions_of(deform_bar(setup, turn, Eigen::Vector3d(0.1, 0, 0.5), 1000, 1e-14, nullptr, true));
+  const Eigen::Vector3d center(0.1, 0, 0.5);
+  double largest = 0;
+  for(Eigen::Index i = 0; i < moved.rows(); ++i)
+  {
+    const Eigen::Vector3d expected = center + turn * (rest_positions.row(i).transpose() - center);
+    largest = std::max(largest, (moved.row(i).transpose() - expected).norm());
+  }
+  CHECK(largest < 1e-9);
+
+  // An open sheet, its border outside the ROI but one side left free: the
+  // volume is not defined and the setting changes nothing.
+  auto lift = [](bool preserve) {
+    Surface_mesh sheet = to_mesh<Surface_mesh>(bumpy_plane(16));
+    Spectral deformation(sheet);
+    for(auto v : vertices(sheet))
+    {
+      const Point& p = sheet.point(v);
+      if(p.x() > 0.01)
+        deformation.insert_roi_vertex(v);
+      if(p.x() > 0.99)
+        deformation.insert_control_vertex(v);
+    }
+    deformation.set_number_of_frequencies(30);
+    deformation.set_volume_preservation(preserve);
+    for(auto v : vertices(sheet))
+      if(sheet.point(v).x() > 0.99)
+        deformation.set_target_position(v, Point(sheet.point(v).x(), sheet.point(v).y(), sheet.point(v).z() + 0.3));
+    deformation.deform();
+    REQUIRE(deformation.deform_report().success);
+    CHECK_FALSE(deformation.deform_report().volume_preserved);
+    return positions_of(sheet);
+  };
+  CHECK(lift(true) == lift(false));
 }

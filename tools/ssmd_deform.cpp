@@ -404,6 +404,7 @@ private:
         deformation->set_rotation_patches(static_cast<std::size_t>(m_options.rotation_patches));
       if(m_options.stage_angle >= 0)
         deformation->set_stage_angle(m_options.stage_angle);
+      deformation->set_volume_preservation(m_options.volume_preservation);
       deformation->set_smooth_energy(
           m_options.energy == Deformation_tool::Energy::ARAP ? CGAL::ARAP_ENERGY
           : m_options.energy == Deformation_tool::Energy::DUAL_LAPLACIAN_AND_ARAP
@@ -684,6 +685,10 @@ private:
            << std::setprecision(3) << def.last_step << ")\n";
     if(def.stages > 1)
       m_info << "stages: " << def.stages << " (a handle turned by more than the stage angle)\n";
+    if(m_options.volume_preservation && m_options.algorithm != Deformation_tool::Algorithm::SPATIAL)
+      m_info << (def.volume_preserved ? "enclosed volume kept\n"
+                                      : "enclosed volume not defined (the surface around the region is open): "
+                                        "not kept\n");
     m_info << "max handle residual: " << std::setprecision(3) << m_report.max_handle_residual
            << " of the bounding-box diagonal of the mesh\n";
   }

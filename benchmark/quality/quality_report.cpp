@@ -106,6 +106,7 @@ struct Options
   std::size_t rotation_patches = Default_settings::default_rotation_patches; // 0: the full iteration
   CGAL::Spectral_smooth_energy smooth_energy = Default_settings().smooth_energy; // of the iteration
   double stage_angle = Default_settings::default_stage_angle * 180 / 3.14159265358979323846; // degrees
+  bool volume_preservation = false;       // set_volume_preservation() of the spectral algorithms
   bool partition_of_unity_basis = false; // the approximate basis instead of the exact one
   Eigen::Index basis_samples = 0;         // of the approximate basis; 0: its default
   unsigned int long_iterations = 1000;      // of the additional runs
@@ -140,6 +141,8 @@ void print_usage(const char* program)
       << "                                arap: the energy of the iteration\n"
       << "  --stage-angle DEGREES         the largest turn of a handle per stage of deform()\n"
       << "                                (default: the class's, 30; 0: one stage)\n"
+      << "  --volume-preservation         the detail transfer keeps the enclosed volume\n"
+      << "                                (set_volume_preservation(true))\n"
       << "  --long-iterations N           iteration cap of the additional runs made when the\n"
       << "                                default deform() does not converge (default 1000)\n"
       << "  --large-roi N                 ROIs with more vertices are large (default 20000)\n"
@@ -236,6 +239,8 @@ Options parse_options(int argc, char** argv)
       if(end == text.c_str() || *end != '\0' || !(options.stage_angle >= 0) || !std::isfinite(options.stage_angle))
         throw std::invalid_argument("--stage-angle expects an angle of at least 0 degrees, got '" + text + "'");
     }
+    else if(argument == "--volume-preservation")
+      options.volume_preservation = true;
     else if(argument == "--basis-samples")
       options.basis_samples = to_positive_int(value(), argument);
     else if(argument == "--rotation-patches")
@@ -449,6 +454,7 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
     deformation.set_rotation_patches(options.rotation_patches);
     deformation.set_smooth_energy(options.smooth_energy);
     deformation.set_stage_angle(options.stage_angle);
+    deformation.set_volume_preservation(options.volume_preservation);
     deformation.set_constraint_policy(policy);
     // This program owns its process: the solvers may change process-wide
     // state (OpenBLAS threads, SuiteSparse's allocator) to run faster.
@@ -764,6 +770,7 @@ void write_report(const std::string& filename, const Options& options, const Run
       << options.rotation_patches
       << " (0: the full iteration), stage angle "
       << fixed(options.stage_angle, 0) << "°"
+      << (options.volume_preservation ? ", volume preservation" : "")
       << ", additional runs `deform("
       << options.long_iterations << ", 1e-4)` (CGAL on ROIs above " << options.large_roi
       << " vertices: " << options.arap_large_iterations

@@ -88,6 +88,7 @@ inline py::dict to_dict(const CGAL::Spectral_deformation_report& r)
   d["message"] = r.message;
   d["iterations"] = r.iterations;
   d["stages"] = r.stages;
+  d["volume_preserved"] = r.volume_preserved;
   d["last_step"] = r.last_step;
   d["converged"] = r.converged;
   d["max_control_residual"] = r.max_control_residual;
@@ -109,6 +110,7 @@ struct Deformation_settings
   bool single_precision_basis = false;
   long long rotation_patches = -1; // negative: the library's default
   double stage_angle = -1;         // degrees; negative: the library's default
+  bool volume_preservation = false;
   std::string basis_cache;       // empty: none
 };
 
@@ -360,6 +362,7 @@ private:
           d.set_rotation_patches(static_cast<std::size_t>(m_settings.rotation_patches));
         if(m_settings.stage_angle >= 0)
           d.set_stage_angle(m_settings.stage_angle);
+        d.set_volume_preservation(m_settings.volume_preservation);
       }
       std::vector<Vertex_index> roi_vertices;
       for(std::size_t v = 0; v < m_is_roi.size(); ++v)

@@ -107,6 +107,8 @@ default, 1000; 0: one rotation per dual vertex, the full iteration).
 stage_angle: the largest turn of a handle per stage of the iteration, in
 degrees (None: the library's default, 30, with which large bends do not
 fold; 0: the targets in one stage).
+volume_preservation: the detail transfer keeps the volume the surface
+encloses (when the region is cut out of a closed surface).
 basis_cache: a file to read the basis from, or to write it to once computed.
 progress: a callable receiving a dict after each step of the eigensolver.
 
@@ -118,7 +120,7 @@ Raises ValueError for every input the library rejects, with its message.
                            const std::string& policy, const std::string& algorithm,
                            const std::string& energy, const py::object& constraint_weight, bool single_precision_basis,
                            const py::object& rotation_patches, const py::object& stage_angle,
-                           const py::object& basis_cache,
+                           bool volume_preservation, const py::object& basis_cache,
                            const py::object& progress) {
              Deformation_settings settings;
              if(m < 1)
@@ -151,6 +153,7 @@ Raises ValueError for every input the library rejects, with its message.
                  throw py::value_error("stage_angle must be a finite angle of at least 0 degrees");
                settings.stage_angle = degrees;
              }
+             settings.volume_preservation = volume_preservation;
              if(!basis_cache.is_none())
                settings.basis_cache = py::str(py::module_::import("os").attr("fspath")(basis_cache));
              if(!progress.is_none() && !PyCallable_Check(progress.ptr()))
@@ -162,7 +165,8 @@ Raises ValueError for every input the library rejects, with its message.
            py::arg("algorithm") = "spectral", py::arg("energy") = "dual_laplacian_and_arap",
            py::arg("constraint_weight") = py::none(),
            py::arg("single_precision_basis") = false, py::arg("rotation_patches") = py::none(),
-           py::arg("stage_angle") = py::none(), py::arg("basis_cache") = py::none(),
+           py::arg("stage_angle") = py::none(), py::arg("volume_preservation") = false,
+           py::arg("basis_cache") = py::none(),
            py::arg("progress") = py::none())
       .def_property_readonly("number_of_vertices", &Deformation_session::number_of_vertices,
                              "The number of vertices n.")

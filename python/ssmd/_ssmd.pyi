@@ -38,6 +38,7 @@ class Deformation:
         single_precision_basis: bool = False,
         rotation_patches: Optional[int] = None,
         stage_angle: Optional[float] = None,
+        volume_preservation: bool = False,
         basis_cache: Optional[PathLike] = None,
         progress: Optional[ProgressCallback] = None,
     ) -> None: ...

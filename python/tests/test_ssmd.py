@@ -106,6 +106,29 @@ def test_stage_angle(tube_mesh):
                                                                stage_angle=-1))
 
 
+def test_volume_preservation():
+    """A sphere squeezed between two caps keeps its volume with volume_preservation=True."""
+    V, F = icosphere(3)
+    fixed = np.flatnonzero(V[:, 2] < -0.8)
+    handles = np.flatnonzero(V[:, 2] > 0.8)
+
+    def volume(W):
+        a, b, c = W[F[:, 0]], W[F[:, 1]], W[F[:, 2]]
+        return np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6
+
+    def run(**settings):
+        d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=30, **settings)
+        d.translate([0.0, 0.0, -0.4])
+        W = d.deform()
+        assert d.deform_report["volume_preserved"] == settings.get("volume_preservation", False)
+        return W
+
+    free, kept = run(), run(volume_preservation=True)
+    assert volume(free) < 0.97 * volume(V)
+    assert abs(volume(kept) / volume(V) - 1) < 1e-9
+    assert np.array_equal(kept[fixed], V[fixed])
+
+
 def test_arap_energy(tube_mesh):
     """The ARAP energy: one patch per vertex is its full iteration, and it differs from the default."""
     V, F, fixed, handles = tube_mesh

@@ -47,6 +47,7 @@ struct Command_line_options
   std::size_t frequencies = 100;
   long long rotation_patches = -1; // negative: the library's default
   double stage_angle = -1;         // degrees; negative: the library's default
+  bool volume_preservation = false; // the detail transfer keeps the enclosed volume
   unsigned int iterations = 10;
   double tolerance = 1e-4;
   double constraint_weight = 1.0;
@@ -299,6 +300,9 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
       ->option_text("DEGREES")
       ->check(internal::expects("--stage-angle", "a non-negative finite number",
                                 [](const std::string& v) { return internal::is_non_negative(v, true); }));
+  app.add_flag("--volume-preservation", options.volume_preservation,
+               "the spectral detail transfer keeps the volume the surface encloses (when the "
+               "region is cut out of a closed surface).");
   app.add_option("--energy", energy,
                  "what the spectral iteration minimizes: dual-laplacian-and-arap (default, the sum "
                  "of the two), dual-laplacian (the paper's dual Laplacian editing: open sheets "

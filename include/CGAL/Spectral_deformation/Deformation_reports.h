@@ -45,6 +45,10 @@ struct Spectral_deformation_report
   std::string message;              ///< why not, when `success` is `false`
   unsigned int iterations = 0;      ///< solves of the (reduced or spatial) system, in all stages
   unsigned int stages = 1;          ///< stages the targets were reached in (see `Spectral_parameters::set_stage_angle()`)
+  /// whether the detail transfer kept the enclosed volume: volume preservation
+  /// is on and the region is cut out of a closed surface (see
+  /// `Spectral_parameters::set_volume_preservation()`)
+  bool volume_preserved = false;
   double last_step = 0;             ///< last relative step (see `set_tolerance()`)
   bool converged = false;           ///< the last step fell below the tolerance
   double max_control_residual = 0;  ///< largest distance of a control vertex to its target, relative to the bounding-box diagonal of the region

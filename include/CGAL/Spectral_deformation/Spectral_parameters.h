@@ -181,6 +181,28 @@ public:
     m_computation.set_stage_angle(degrees * 3.14159265358979323846 / 180);
   }
 
+  /// Whether the detail transfer keeps the volume the surface encloses
+  /// (default `false`).
+  bool volume_preservation() const { return m_computation.settings().preserve_volume; }
+  /// Makes the detail transfer of `deform()` keep the volume enclosed by
+  /// the surface: the least-squares positions of the detail transfer are
+  /// corrected along the direction that changes the volume at the least
+  /// cost in the same energy (one more back-substitution, with the gradient
+  /// of the volume as right-hand side), by the amount that restores the
+  /// volume of the rest shape. A twist, which turns a tube without changing
+  /// its volume, then keeps the tube's section (see the manual's section on
+  /// tubes). The volume is that of the whole surface when the region is cut
+  /// out of a closed surface: every boundary edge of the faces of the region
+  /// joins two fixed vertices. Otherwise (an open sheet, a boundary inside the
+  /// ROI) it is not defined and the setting has no effect. With several
+  /// connected components, their total volume is kept. Takes effect at the
+  /// next `deform()`. `SPECTRAL_LINEAR` keeps the volume too.
+  void set_volume_preservation(bool preserve)
+  {
+    static_assert(is_spectral, "set_volume_preservation(): SPATIAL_DUAL_LAPLACIAN has no detail transfer");
+    m_computation.set_volume_preservation(preserve);
+  }
+
   /// @}
 
   /// \name Basis cache

@@ -16,6 +16,8 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -58,6 +60,9 @@ using Mesh::connected_components;
 ///   the constrained vertices), factored once per mesh (`prepare_soft()`);
 /// - exact: a Dirichlet problem with prescribed vertices, factored once per
 ///   set of prescribed vertices; they keep their prescribed positions exactly.
+///
+/// Optionally (`set_volume_preservation()`), the Poisson solution is
+/// corrected to enclose the rest volume, with one more back-substitution.
 template <class SparseSPDSolverTraits = Default_deformation_sparse_spd_solver_traits>
 class Detail_transfer
 {
@@ -85,6 +90,9 @@ public:
   void set_mesh(const Triangle_arrays& detailed, Eigen::SparseMatrix<double> stiffness)
   {
     m_rest = detailed.positions;
+    m_triangles = detailed.triangles;
+    m_rest_volume = enclosed_volume(m_rest);
+    m_volume_defined = false;
     m_stiffness = std::move(stiffness);
     m_rotated_edges = Rotated_edges();
     m_component = connected_components(detailed.triangles, m_rest.rows(), m_number_of_components);
@@ -105,6 +113,21 @@ public:
       throw Error(Error::SOLVER_FAILURE, "the smooth mesh has non-finite coordinates");
     m_rotated_edges.initialize(m_stiffness, m_rest, smooth_rest);
   }
+
+  /// Whether a transfer keeps the volume enclosed by the surface, when it is
+  /// defined: `fixed` flags the vertices that never move, and the volume is
+  /// defined when every edge of the mesh's boundary joins two of them (the
+  /// region is cut out of a closed surface whose other faces stay put, so
+  /// the change of the signed volume of its faces is that of the volume
+  /// the whole surface encloses).
+  void set_volume_preservation(bool preserve, const std::vector<char>& fixed)
+  {
+    m_preserve_volume = preserve;
+    m_volume_defined = boundary_is_fixed(fixed);
+  }
+
+  /// Whether the transfers keep the enclosed volume (set and defined).
+  bool preserves_volume() const { return m_preserve_volume && m_volume_defined; }
 
   /// Soft policy: factor, once per mesh (later calls do nothing), the
   /// system with the vertices flagged in `anchored` prescribed (the vertices
@@ -211,10 +234,107 @@ public:
       return false;
     if(!m_dirichlet.solve(right_hand_side(smooth_deformed), prescribed_positions, result))
       return false;
+    if(preserves_volume() && !keep_volume(m_dirichlet, result))
+      return false;
     return result.allFinite();
   }
 
+  /// Soft policy: when `preserves_volume()`, moves the unanchored vertices
+  /// of `positions` so that the surface encloses the rest volume (called
+  /// last, after any correction of the result). Returns false when a solve
+  /// fails.
+  bool keep_volume_soft(Positions& positions) const
+  {
+    return !preserves_volume() || keep_volume(m_soft, positions);
+  }
+
+  /// The signed volume of the faces at `positions` (Σ det(a, b, c) / 6).
+  double enclosed_volume(const Positions& positions) const
+  {
+    double volume = 0;
+    for(Eigen::Index f = 0; f < m_triangles.rows(); ++f)
+      volume += corner(positions, f, 0).dot(corner(positions, f, 1).cross(corner(positions, f, 2)));
+    return volume / 6;
+  }
+
   const Eigen::SparseMatrix<double>& stiffness() const { return m_stiffness; }
+
+private:
+  Eigen::Vector3d corner(const Positions& positions, Eigen::Index face, int k) const
+  {
+    return positions.row(m_triangles(face, k)).transpose();
+  }
+
+  // The gradient of enclosed_volume() at `positions` (n×3).
+  void volume_gradient(const Positions& positions, Eigen::MatrixXd& gradient) const
+  {
+    gradient.setZero(positions.rows(), 3);
+    for(Eigen::Index f = 0; f < m_triangles.rows(); ++f)
+    {
+      const Eigen::Vector3d a = corner(positions, f, 0), b = corner(positions, f, 1), c = corner(positions, f, 2);
+      gradient.row(m_triangles(f, 0)) += b.cross(c).transpose() / 6;
+      gradient.row(m_triangles(f, 1)) += c.cross(a).transpose() / 6;
+      gradient.row(m_triangles(f, 2)) += a.cross(b).transpose() / 6;
+    }
+  }
+
+  bool boundary_is_fixed(const std::vector<char>& fixed) const
+  {
+    // An edge of one face only is on the boundary of the region's faces.
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(static_cast<std::size_t>(3 * m_triangles.rows()));
+    for(Eigen::Index f = 0; f < m_triangles.rows(); ++f)
+      for(int k = 0; k < 3; ++k)
+      {
+        const int a = m_triangles(f, k), b = m_triangles(f, (k + 1) % 3);
+        edges.emplace_back((std::min)(a, b), (std::max)(a, b));
+      }
+    std::sort(edges.begin(), edges.end());
+    for(std::size_t e = 0; e < edges.size();)
+    {
+      std::size_t next = e + 1;
+      while(next < edges.size() && edges[next] == edges[e])
+        ++next;
+      if(next - e == 1 && !(fixed[static_cast<std::size_t>(edges[e].first)] &&
+                            fixed[static_cast<std::size_t>(edges[e].second)]))
+        return false;
+      e = next;
+    }
+    return true;
+  }
+
+  // The Poisson solution y minimizes ½ yᵀQy − bᵀy; with the volume kept,
+  // Q y = b + λ ∇V(y): y = y₀ + λ w with Q w = ∇V (prescribed rows 0), the
+  // gradient taken at y₀ (one more solve), and λ the root of the cubic
+  // V(y₀ + λ w) = V₀, found by Newton's method from 0.
+  template <class System>
+  bool keep_volume(const System& system, Positions& y) const
+  {
+    Eigen::MatrixXd& gradient = m_volume_gradient;
+    volume_gradient(y, gradient);
+    Positions& w = m_volume_direction;
+    const Positions zero = Positions::Zero(y.rows(), 3);
+    if(!system.solve(gradient, zero, w))
+      return false;
+    double lambda = 0;
+    const double tolerance = 1e-12 * std::abs(m_rest_volume);
+    for(int step = 0; step < 8; ++step)
+    {
+      const Positions trial = y + lambda * w;
+      const double excess = enclosed_volume(trial) - m_rest_volume;
+      if(std::abs(excess) <= tolerance)
+        break;
+      volume_gradient(trial, gradient);
+      const double slope = (gradient.array() * w.array()).sum();
+      if(!(std::abs(slope) > 0))
+        break; // the direction does not change the volume: keep the best so far
+      lambda -= excess / slope;
+    }
+    y += lambda * w;
+    return y.allFinite();
+  }
+
+public:
 
   /// Whether the sparse solvers may change process-wide state to run faster
   /// (see `SparseSPDSolverTraits`); takes effect at the next factorization.
@@ -226,6 +346,11 @@ public:
 
 private:
   Positions m_rest;
+  Mesh::Triangles m_triangles;
+  double m_rest_volume = 0;
+  bool m_preserve_volume = false, m_volume_defined = false;
+  mutable Eigen::MatrixXd m_volume_gradient;
+  mutable Positions m_volume_direction;
   Eigen::SparseMatrix<double> m_stiffness;
   Rotated_edges m_rotated_edges;
   // A buffer of a transfer, kept between calls: on large meshes, fresh pages

@@ -137,6 +137,14 @@ public:
   /// Takes effect at the next `deform()`.
   void set_stage_angle(double radians) { m_settings.stage_angle = radians; }
 
+  /// Takes effect at the next `deform()`.
+  void set_volume_preservation(bool preserve)
+  {
+    m_settings.preserve_volume = preserve;
+    if(m_region)
+      m_region->pipeline.set_volume_preservation(preserve, *m_region);
+  }
+
   void set_smooth_energy(Spectral_smooth_energy energy)
   {
     if(energy == m_settings.smooth_energy)

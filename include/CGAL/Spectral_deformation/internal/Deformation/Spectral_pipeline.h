@@ -57,6 +57,7 @@ struct Spectral_settings
   std::size_t rotation_patches = default_rotation_patches;
   Spectral_smooth_energy smooth_energy = DUAL_LAPLACIAN_AND_ARAP_ENERGY;
   double stage_angle = default_stage_angle; // radians; 0: the targets reached in one stage
+  bool preserve_volume = false;             // the detail transfer keeps the enclosed volume
 
   static constexpr std::size_t default_rotation_patches = 1000;
   static constexpr double default_stage_angle = 3.14159265358979323846 / 6;
@@ -89,6 +90,7 @@ public:
     // The stiffness of the region: for the basis, the ARAP energy and the detail transfer.
     m_detail.set_process_wide_tuning(tuning);
     m_detail.set_mesh(region.arrays, cotangent_stiffness(region.arrays, tuning));
+    m_detail.set_volume_preservation(settings.preserve_volume, region.is_fixed);
     const Eigen::SparseMatrix<double>& stiffness = m_detail.stiffness();
     const Basis::Basis_match match = Basis::basis_match(supplied, region, region_fingerprint);
     if(match != Basis::Basis_match::NONE)
@@ -186,6 +188,7 @@ public:
       throw Spectral_deformation_error(Spectral_deformation_error::SOLVER_FAILURE, "the detail transfer failed (a face of the smooth "
                                          "deformed mesh is degenerate)");
     report.detail_transfer_seconds = seconds_since(transfer_start);
+    report.volume_preserved = m_detail.preserves_volume();
   }
 
   /// The solves of each stage before the last in `deform()`.
@@ -205,6 +208,12 @@ public:
   void set_process_wide_tuning(bool enabled) { m_detail.set_process_wide_tuning(enabled); }
   void set_single_precision(bool single) { m_solver.set_single_precision(single); }
   void set_rotation_patches(std::size_t count) { m_solver.set_rotation_patches(count); }
+  /// See `Detail_transfer::set_volume_preservation()`; takes effect at the next `deform()`.
+  void set_volume_preservation(bool preserve, const Region_geometry& region)
+  {
+    m_detail.set_volume_preservation(preserve, region.is_fixed);
+  }
+  bool preserves_volume() const { return m_detail.preserves_volume(); }
   /// Sets the energy of the iteration: the reduced matrices are computed
   /// again (the basis and the detail transfer are kept) and the next
   /// `deform()` starts from the rest shape; the constraint set must be
@@ -312,7 +321,7 @@ private:
     if(!m_detail.transfer_soft(smooth_deformed, anchored, set.constrained, targets, result))
       return false;
     meet_soft_constraints(region, set, targets, result);
-    return true;
+    return m_detail.keep_volume_soft(result);
   }
 
   // The detail transfer carries the rotations of the smooth mesh, not its
