@@ -306,26 +306,36 @@ private:
   // The Poisson solution y minimizes ½ yᵀQy − bᵀy; with the volume kept,
   // Q y = b + λ ∇V(y): y = y₀ + λ w with Q w = ∇V (prescribed rows 0), the
   // gradient taken at y₀ (one more solve), and λ the root of the cubic
-  // V(y₀ + λ w) = V₀, found by Newton's method from 0.
+  // V(y₀ + λ w) = V₀, whose coefficients one pass over the faces gives,
+  // found by Newton's method from 0.
   template <class System>
   bool keep_volume(const System& system, Positions& y) const
   {
     Eigen::MatrixXd& gradient = m_volume_gradient;
     volume_gradient(y, gradient);
     Positions& w = m_volume_direction;
-    const Positions zero = Positions::Zero(y.rows(), 3);
-    if(!system.solve(gradient, zero, w))
+    if(!system.solve(gradient, Positions::Zero(y.rows(), 3), w))
       return false;
+    Eigen::Vector4d cubic = Eigen::Vector4d::Zero(); // V(y₀ + λ w) = Σ_k cubic[k] λ^k
+    for(Eigen::Index f = 0; f < m_triangles.rows(); ++f)
+    {
+      const Eigen::Vector3d a = corner(y, f, 0), b = corner(y, f, 1), c = corner(y, f, 2);
+      const Eigen::Vector3d da = corner(w, f, 0), db = corner(w, f, 1), dc = corner(w, f, 2);
+      cubic[0] += a.dot(b.cross(c));
+      cubic[1] += da.dot(b.cross(c)) + a.dot(db.cross(c)) + a.dot(b.cross(dc));
+      cubic[2] += a.dot(db.cross(dc)) + da.dot(b.cross(dc)) + da.dot(db.cross(c));
+      cubic[3] += da.dot(db.cross(dc));
+    }
+    cubic /= 6;
+    cubic[0] -= m_rest_volume;
     double lambda = 0;
     const double tolerance = 1e-12 * std::abs(m_rest_volume);
     for(int step = 0; step < 8; ++step)
     {
-      const Positions trial = y + lambda * w;
-      const double excess = enclosed_volume(trial) - m_rest_volume;
+      const double excess = ((cubic[3] * lambda + cubic[2]) * lambda + cubic[1]) * lambda + cubic[0];
       if(std::abs(excess) <= tolerance)
         break;
-      volume_gradient(trial, gradient);
-      const double slope = (gradient.array() * w.array()).sum();
+      const double slope = (3 * cubic[3] * lambda + 2 * cubic[2]) * lambda + cubic[1];
       if(!(std::abs(slope) > 0))
         break; // the direction does not change the volume: keep the best so far
       lambda -= excess / slope;
