@@ -947,6 +947,52 @@ TEST_CASE("rotation patches are connected, cover every dual vertex, one surface 
   }
 }
 
+TEST_CASE("rotation patches grow by distance along the surface, not by the number of faces", "[patches]")
+{
+  // A strip of one row of cells, square ones on its left half and eight
+  // times wider ones on its right half: grown from one face at each end, the
+  // two patches meet near half-way along the surface (x = 0.46, the paths
+  // between the centroids of the square cells zigzag), not half-way in
+  // faces, which would put the border at x = 0.28, deep in the fine half.
+  Soup soup;
+  std::vector<double> xs;
+  for(int i = 0; i < 40; ++i)
+    xs.push_back(0.5 * i / 40);
+  for(int i = 0; i <= 5; ++i)
+    xs.push_back(0.5 + 0.5 * i / 5);
+  const int rows = 1, columns = static_cast<int>(xs.size());
+  for(int j = 0; j <= rows; ++j)
+    for(double x : xs)
+      soup.points.emplace_back(x, 0.0125 * j, 0);
+  auto id = [&](int i, int j) { return std::size_t(j * columns + i); };
+  for(int j = 0; j < rows; ++j)
+    for(int i = 0; i + 1 < columns; ++i)
+    {
+      soup.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      soup.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  const internal::Mesh::Triangle_arrays arrays =
+      internal::Mesh::extract_triangle_arrays(to_mesh<Surface_mesh>(soup), CGAL::parameters::default_values());
+  const internal::Mesh::Dual_mesh_operator dual(arrays.triangles, arrays.number_of_vertices());
+  const internal::Mesh::Positions centroids = dual.centroids(arrays.positions);
+  auto nearest_face = [&](double x, double y) {
+    Eigen::Index best = 0;
+    (centroids.rowwise() - Eigen::RowVector3d(x, y, 0)).rowwise().squaredNorm().minCoeff(&best);
+    return static_cast<int>(best);
+  };
+  const std::vector<int> seeds{nearest_face(0, 0), nearest_face(1, 0)};
+  std::vector<int> patch_of_face;
+  REQUIRE(internal::Deformation::grow_patches(dual, centroids, seeds, patch_of_face) == 2);
+  for(Eigen::Index f = 0; f < centroids.rows(); ++f)
+  {
+    INFO("face centroid x = " << centroids(f, 0));
+    if(centroids(f, 0) < 0.4)
+      CHECK(patch_of_face[static_cast<std::size_t>(f)] == 0);
+    if(centroids(f, 0) > 0.55)
+      CHECK(patch_of_face[static_cast<std::size_t>(f)] == 1);
+  }
+}
+
 TEST_CASE("one rotation patch per dual vertex is the full iteration, fewer patches approach it",
           "[deformation][patches]")
 {

@@ -21,7 +21,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
+#include <queue>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -73,36 +76,47 @@ inline std::vector<int> farthest_point_seeds(const Positions& centroids, std::si
   return seeds;
 }
 
-/// The patch of every face of `dual`: the patches grow breadth first from
-/// the `seeds` over the dual graph; a part of the surface that no seed
-/// reaches becomes a patch of its own. Returns the number of patches.
-inline int grow_patches(const Dual_mesh_operator& dual, const std::vector<int>& seeds,
+/// The patch of every face of `dual`: the patches grow from the `seeds`
+/// over the dual graph by the distance between neighbouring face
+/// `centroids` (each face joins the seed nearest along the surface), so that
+/// patches are about as large on the surface where the triangles are small
+/// as where they are large; a part of the surface that no seed reaches
+/// becomes a patch of its own. Returns the number of patches.
+inline int grow_patches(const Dual_mesh_operator& dual, const Positions& centroids, const std::vector<int>& seeds,
                         std::vector<int>& patch_of_face)
 {
   const std::size_t faces = static_cast<std::size_t>(dual.number_of_faces());
   patch_of_face.assign(faces, -1);
-  std::vector<int> queue;
-  queue.reserve(faces);
+  std::vector<double> distance(faces, std::numeric_limits<double>::infinity());
+  typedef std::pair<double, int> Entry;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   int patches = 0;
   for(int seed : seeds)
     if(patch_of_face[static_cast<std::size_t>(seed)] < 0)
     {
       patch_of_face[static_cast<std::size_t>(seed)] = patches++;
-      queue.push_back(seed);
+      distance[static_cast<std::size_t>(seed)] = 0;
+      queue.emplace(0.0, seed);
     }
   const Triangles& neighbours = dual.neighbours();
-  std::size_t head = 0;
   auto grow = [&]() {
-    for(; head < queue.size(); ++head)
+    while(!queue.empty())
     {
-      const int f = queue[head];
+      const auto [d, f] = queue.top();
+      queue.pop();
+      if(d > distance[static_cast<std::size_t>(f)])
+        continue;
       for(int j = 0; j < 3; ++j)
       {
         const int g = neighbours(f, j);
-        if(g >= 0 && patch_of_face[static_cast<std::size_t>(g)] < 0)
+        if(g < 0)
+          continue;
+        const double through_f = d + (centroids.row(g) - centroids.row(f)).norm();
+        if(through_f < distance[static_cast<std::size_t>(g)])
         {
+          distance[static_cast<std::size_t>(g)] = through_f;
           patch_of_face[static_cast<std::size_t>(g)] = patch_of_face[static_cast<std::size_t>(f)];
-          queue.push_back(g);
+          queue.emplace(through_f, g);
         }
       }
     }
@@ -112,7 +126,8 @@ inline int grow_patches(const Dual_mesh_operator& dual, const std::vector<int>& 
     if(patch_of_face[f] < 0)
     {
       patch_of_face[f] = patches++;
-      queue.push_back(static_cast<int>(f));
+      distance[f] = 0;
+      queue.emplace(0.0, static_cast<int>(f));
       grow();
     }
   return patches;
@@ -121,7 +136,7 @@ inline int grow_patches(const Dual_mesh_operator& dual, const std::vector<int>& 
 /// Groups the rows of `dual` (the dual vertices with three neighbours) into
 /// about `count` patches of neighbouring faces: seeds spread by farthest
 /// point sampling of the face centroids (on a regular subsample of them),
-/// then grown breadth first over the dual graph, so that a patch never jumps
+/// then grown over the dual graph (`grow_patches()`), so that a patch never jumps
 /// across a gap between two parts of the surface. A part of the surface that
 /// no seed reaches is a patch of its own. Returns the patch of each row,
 /// numbered from 0 without gaps; `count` at least the number of rows gives
@@ -142,7 +157,7 @@ inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const 
   const std::vector<int> seeds =
       farthest_point_seeds(centroids, static_cast<std::size_t>(dual.number_of_faces()), count);
   std::vector<int> patch_of_face;
-  const int patches = grow_patches(dual, seeds, patch_of_face);
+  const int patches = grow_patches(dual, centroids, seeds, patch_of_face);
 
   // Only the rows carry rotations: number the patches that hold a row.
   std::vector<int> renumbered(static_cast<std::size_t>(patches), -1);
@@ -179,7 +194,7 @@ inline std::vector<int> cluster_vertices(const Dual_mesh_operator& dual, const P
     const std::vector<int> seeds =
         farthest_point_seeds(centroids, static_cast<std::size_t>(dual.number_of_faces()), count);
     std::vector<int> patch_of_face;
-    grow_patches(dual, seeds, patch_of_face);
+    grow_patches(dual, centroids, seeds, patch_of_face);
     for(Eigen::Index f = 0; f < triangles.rows(); ++f)
       for(int k = 0; k < 3; ++k)
         result[static_cast<std::size_t>(triangles(f, k))] = patch_of_face[static_cast<std::size_t>(f)];
