@@ -49,6 +49,7 @@ struct Options
   std::vector<std::size_t> patches{1000}; // besides the full iteration
   std::vector<std::size_t> approximate_patches; // variants with the partition-of-unity basis (0: full)
   bool skip_exact = false;                     // no variant with the exact basis
+  bool skip_full = false;                      // no variant with the full iteration
   std::size_t basis_samples = 0;               // of the partition-of-unity basis (0: its default)
   int constraint_changes = 0;                  // new constraint sets after the path
   int drags = 30;
@@ -76,6 +77,7 @@ void print_usage(const char* program)
             << "  --cgal-drags-large N   of CGAL ARAP above --large-mesh vertices (default 5)\n"
             << "  --large-mesh N         (default 300000)\n"
             << "  --skip-exact           only the variants of --approximate-basis\n"
+            << "  --skip-full            no variant with the full iteration (patches only)\n"
             << "  --basis-samples k      samples of the partition-of-unity basis (default: its own)\n"
             << "  --constraint-changes N after the path, N new constraint sets (a handle vertex\n"
             << "                         released, then taken again), each timed (default 0)\n"
@@ -121,6 +123,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--patches") o.patches = parse_list<std::size_t>(value());
     else if(a == "--approximate-basis") o.approximate_patches = parse_list<std::size_t>(value());
     else if(a == "--skip-exact") o.skip_exact = true;
+    else if(a == "--skip-full") o.skip_full = true;
     else if(a == "--basis-samples") o.basis_samples = parse_list<std::size_t>(value()).at(0);
     else if(a == "--constraint-changes") o.constraint_changes = std::stoi(value());
     else if(a == "--drags") o.drags = std::stoi(value());
@@ -359,12 +362,14 @@ int main(int argc, char** argv)
     std::vector<Variant_result> results;
     if(!o.skip_exact)
     {
-      results.push_back(run_package(c, g, o, 0));
+      if(!o.skip_full)
+        results.push_back(run_package(c, g, o, 0));
       for(std::size_t k : o.patches)
         results.push_back(run_package(c, g, o, k));
       if(o.paper_energy)
       {
-        results.push_back(run_package(c, g, o, 0, true));
+        if(!o.skip_full)
+          results.push_back(run_package(c, g, o, 0, true));
         for(std::size_t k : o.patches)
           results.push_back(run_package(c, g, o, k, true));
       }

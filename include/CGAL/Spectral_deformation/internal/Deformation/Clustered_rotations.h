@@ -528,17 +528,24 @@ private:
   // right-hand side.
   void evaluate_patches(const Eigen::MatrixXd& coefficients, int first, int last, Eigen::MatrixXd& rhs) const
   {
-    const Eigen::Index columns = 3 * (last - first);
-    const Eigen::Matrix<double, 3, Eigen::Dynamic> covariances =
-        coefficients.transpose() * m_P.middleCols(3 * first, columns);
+    // Both products have three columns on one side: as general matrix
+    // products, Eigen would first copy the m × 3·patches block of P and of
+    // K into its packed layout, reading each twice. Column by column, each
+    // is read once, in place.
+    const Eigen::Index m = m_K.rows();
     for(int p = first; p < last; ++p)
     {
+      Eigen::Matrix3d covariance;
+      for(int k = 0; k < 3; ++k)
+        covariance.col(k) = coefficients.transpose() * m_P.col(3 * p + k);
       auto rotation = m_rotations.middleRows<3>(3 * p);
       // A patch squeezed into a curve (a covariance of rank one) determines
       // no rotation: it keeps the last one.
-      rotation = nearest_rotation(covariances.middleCols<3>(3 * (p - first)), rotation.transpose()).transpose();
+      rotation = nearest_rotation(covariance, rotation.transpose()).transpose();
     }
-    rhs.noalias() = m_K.middleCols(3 * first, columns) * m_rotations.middleRows(3 * first, columns);
+    rhs.setZero(m, 3);
+    for(Eigen::Index c = 3 * first; c < 3 * last; ++c)
+      rhs.noalias() += m_K.col(c) * m_rotations.row(c);
   }
 
   int m_patches = 0;
