@@ -1076,6 +1076,25 @@ TEST_CASE("constraint products: rigid parts from per-group moments equal the pro
   INFO("expected\n" << expected << "\ncomputed\n" << computed);
   CHECK((computed - expected).norm() <= 1e-12 * expected.norm());
 
+  // The smooth motion of each group from the same moments equals the rigid
+  // fit from its smooth rest positions to its rows times the coefficients.
+  const Eigen::MatrixXd coefficients = Eigen::MatrixXd::Random(m, 3);
+  for(std::size_t g = 0; g < set.groups.size(); ++g)
+  {
+    const std::vector<int>& group = set.groups[g];
+    internal::Mesh::Positions from(static_cast<Eigen::Index>(group.size()), 3), to(from.rows(), 3);
+    for(std::size_t k = 0; k < group.size(); ++k)
+    {
+      from.row(static_cast<Eigen::Index>(k)) = smooth.row(set.constrained[static_cast<std::size_t>(group[k])]);
+      to.row(static_cast<Eigen::Index>(k)) = rows.row(group[k]) * coefficients;
+    }
+    const internal::Deformation::Rigid_motion fitted = internal::Deformation::fit_rigid_motion(from, to);
+    const internal::Deformation::Rigid_motion from_moments = products.smooth_motion(g, coefficients);
+    INFO("group " << g);
+    CHECK((from_moments.rotation - fitted.rotation).norm() <= 1e-10);
+    CHECK((from_moments.translation - fitted.translation).norm() <= 1e-10 * (1 + fitted.translation.norm()));
+  }
+
   // Changing only the stretched handle's targets changes the product as the
   // direct one does.
   targets.row(10) += Eigen::RowVector3d(0.5, 0.25, -1.0);

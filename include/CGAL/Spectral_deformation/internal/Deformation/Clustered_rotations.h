@@ -368,6 +368,7 @@ public:
       threads = (std::min)(omp_get_max_threads(), (m_patches + 63) / 64);
 #endif
     m_partial.resize(static_cast<std::size_t>(threads));
+    m_transposed_covariances.resize(static_cast<std::size_t>(threads));
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads) if(threads > 1)
 #endif
@@ -378,7 +379,8 @@ public:
 #endif
       const int first = static_cast<int>(static_cast<long>(m_patches) * thread / threads);
       const int last = static_cast<int>(static_cast<long>(m_patches) * (thread + 1) / threads);
-      evaluate_patches(coefficients, first, last, m_partial[static_cast<std::size_t>(thread)]);
+      evaluate_patches(coefficients, first, last, m_partial[static_cast<std::size_t>(thread)],
+                       m_transposed_covariances[static_cast<std::size_t>(thread)]);
     }
     for(const Eigen::MatrixXd& part : m_partial)
       rhs += part;
@@ -526,22 +528,26 @@ private:
 
   // The rotations of the patches [first, last) and their share of the
   // right-hand side.
-  void evaluate_patches(const Eigen::MatrixXd& coefficients, int first, int last, Eigen::MatrixXd& rhs) const
+  void evaluate_patches(const Eigen::MatrixXd& coefficients, int first, int last, Eigen::MatrixXd& rhs,
+                        Eigen::Matrix<double, Eigen::Dynamic, 3>& transposed_covariances) const
   {
     // Both products have three columns on one side: as general matrix
-    // products, Eigen would first copy the m × 3·patches block of P and of
-    // K into its packed layout, reading each twice. Column by column, each
-    // is read once, in place.
+    // products, Eigen would first copy the m × 3·patches blocks of P and K
+    // into its packed layout. As dot products of the columns of P with the
+    // coefficients, and as rank-one updates by the columns of K, each is
+    // read once, in place.
     const Eigen::Index m = m_K.rows();
+    const Eigen::Index columns = 3 * (last - first);
+    transposed_covariances.resize(columns, 3);
+    transposed_covariances.noalias() = m_P.middleCols(3 * first, columns).transpose().lazyProduct(coefficients);
     for(int p = first; p < last; ++p)
     {
-      Eigen::Matrix3d covariance;
-      for(int k = 0; k < 3; ++k)
-        covariance.col(k) = coefficients.transpose() * m_P.col(3 * p + k);
       auto rotation = m_rotations.middleRows<3>(3 * p);
       // A patch squeezed into a curve (a covariance of rank one) determines
       // no rotation: it keeps the last one.
-      rotation = nearest_rotation(covariance, rotation.transpose()).transpose();
+      rotation = nearest_rotation(transposed_covariances.middleRows<3>(3 * (p - first)).transpose(),
+                                  rotation.transpose())
+                     .transpose();
     }
     rhs.setZero(m, 3);
     for(Eigen::Index c = 3 * first; c < 3 * last; ++c)
@@ -551,6 +557,8 @@ private:
   int m_patches = 0;
   Eigen::MatrixXd m_K, m_P;
   mutable std::vector<Eigen::MatrixXd> m_partial;
+  // The covariances of each thread's patches, transposed.
+  mutable std::vector<Eigen::Matrix<double, Eigen::Dynamic, 3>> m_transposed_covariances;
   mutable Eigen::Matrix<double, Eigen::Dynamic, 3> m_rotations;
 };
 

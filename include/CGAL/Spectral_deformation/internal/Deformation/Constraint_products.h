@@ -67,6 +67,7 @@ public:
       }
       data.smooth_moment = rows.transpose() * smooth;
       data.row_sum = rows.colwise().sum().transpose();
+      data.smooth_center = group.empty() ? Eigen::RowVector3d::Zero() : Eigen::RowVector3d(smooth.colwise().mean());
       data.rest_magnitude = group.empty() ? 0.0 : data.rest.cwiseAbs().maxCoeff();
     }
   }
@@ -108,12 +109,30 @@ public:
     return result;
   }
 
+  /// The rigid motion that best carries the smooth rest positions s of
+  /// group `g` of the set of `initialize()` to its smooth positions
+  /// H_g `coefficients` (`fit_rigid_motion()`), from S_g and q_g: the
+  /// covariance Σ (s_i − s̄)ᵀ(x_i − x̄) is S_gᵀ c − k s̄ᵀ x̄, x̄ = q_gᵀ c / k,
+  /// so the cost does not grow with the size of the group.
+  Rigid_motion smooth_motion(std::size_t g, const Eigen::MatrixXd& coefficients) const
+  {
+    const Group& data = m_groups[g];
+    const Eigen::Index count = data.rest.rows();
+    if(count == 0)
+      return Rigid_motion();
+    const Eigen::RowVector3d to_center = (data.row_sum.transpose() * coefficients) / double(count);
+    const Eigen::Matrix3d covariance = data.smooth_moment.transpose() * coefficients -
+                                       double(count) * data.smooth_center.transpose() * to_center;
+    return rigid_motion_from_moments(data.smooth_center, to_center, covariance, count);
+  }
+
 private:
   struct Group
   {
     Positions rest;                // rest positions of its vertices
     Eigen::MatrixXd smooth_moment; // S_g
     Eigen::VectorXd row_sum;       // q_g
+    Eigen::RowVector3d smooth_center = Eigen::RowVector3d::Zero(); // s̄
     double rest_magnitude = 0;
   };
 

@@ -158,9 +158,9 @@ public:
     report.stages = 1;
     if(Iterated)
     {
-      const std::vector<Positions> stages =
-          intermediate_targets(set, m_solver.constrained_rows(), m_pending, region.arrays.positions,
-                               m_solver.smooth_rest(), targets, stage_angle);
+      const std::vector<Positions> stages = intermediate_targets(
+          set, [this](std::size_t g) { return m_constraint_products.smooth_motion(g, m_pending); },
+          region.arrays.positions, targets, stage_angle);
       for(const Positions& stage : stages)
       {
         const Iteration_report step = m_solver.solve_with_constraint_products(

@@ -44,7 +44,8 @@ constexpr int max_stages = 180;
 ///
 /// For each group of control vertices (the fixed ring does not move), the
 /// motion (R₀, t₀) is fitted from the smooth rest positions of the group to
-/// its current smooth positions (`constrained_rows` × `coefficients`), and
+/// its current smooth positions (its rows of the basis times the
+/// coefficients), and
 /// (R₁, t₁) from its rest positions to its `targets` (with the non-rigid
 /// remainder r_i). Stage s of S carries the group by the rotation
 /// exp(τ log(R₁R₀ᵀ)) R₀, τ = s/S, about its centroid moved a fraction τ of
@@ -53,11 +54,13 @@ constexpr int max_stages = 180;
 /// before the targets themselves (none when S ≤ 1), S at most
 /// `max_stages`. Translations alone are not staged.
 ///
-/// `rest` and `smooth_rest` are the rest positions of the region's detailed
-/// and smooth meshes, `targets` one row per constrained vertex of `set`.
-inline std::vector<Positions> intermediate_targets(const Constraint_set& set, const Eigen::MatrixXd& constrained_rows,
-                                                   const Eigen::MatrixXd& coefficients, const Positions& rest,
-                                                   const Positions& smooth_rest, const Positions& targets,
+/// `start_motion(g)` is the rigid motion (R₀, t₀) of group g of `set`
+/// (`Constraint_products::smooth_motion()`, which does not read the rows of
+/// the basis); `rest` the rest positions of the region's detailed mesh,
+/// `targets` one row per constrained vertex of `set`.
+template <class Start_motion>
+inline std::vector<Positions> intermediate_targets(const Constraint_set& set, const Start_motion& start_motion,
+                                                   const Positions& rest, const Positions& targets,
                                                    double stage_angle)
 {
   std::vector<Positions> stages;
@@ -75,27 +78,23 @@ inline std::vector<Positions> intermediate_targets(const Constraint_set& set, co
   };
   std::vector<Path> paths;
   double largest_turn = 0;
-  for(const std::vector<int>& group : set.groups)
+  for(std::size_t g = 0; g < set.groups.size(); ++g)
   {
+    const std::vector<int>& group = set.groups[g];
     if(group.empty() || static_cast<std::size_t>(group.front()) < set.number_of_fixed)
       continue;
     const Eigen::Index size = static_cast<Eigen::Index>(group.size());
     Path path;
     path.group = &group;
     path.detailed_rest.resize(size, 3);
-    Positions smooth(size, 3), to(size, 3);
-    Eigen::MatrixXd rows(size, constrained_rows.cols());
+    Positions to(size, 3);
     for(Eigen::Index k = 0; k < size; ++k)
     {
       const int position = group[static_cast<std::size_t>(k)];
-      const int vertex = set.constrained[static_cast<std::size_t>(position)];
-      path.detailed_rest.row(k) = rest.row(vertex);
-      smooth.row(k) = smooth_rest.row(vertex);
-      rows.row(k) = constrained_rows.row(position);
+      path.detailed_rest.row(k) = rest.row(set.constrained[static_cast<std::size_t>(position)]);
       to.row(k) = targets.row(position);
     }
-    const Positions now = rows * coefficients;
-    const Rigid_motion start = fit_rigid_motion(smooth, now);
+    const Rigid_motion start = start_motion(g);
     const Rigid_motion end = fit_rigid_motion(path.detailed_rest, to);
     path.start_rotation = start.rotation;
     path.turn = Eigen::AngleAxisd(Eigen::Matrix3d(end.rotation * start.rotation.transpose()));
@@ -137,6 +136,32 @@ inline std::vector<Positions> intermediate_targets(const Constraint_set& set, co
     stages.push_back(std::move(stage));
   }
   return stages;
+}
+
+/// As above, with (R₀, t₀) fitted from the smooth rest positions of each
+/// group to its rows of the basis, `constrained_rows` (one per constrained
+/// vertex of `set`), times `coefficients`: the definition that
+/// `Constraint_products::smooth_motion()` computes without those rows.
+inline std::vector<Positions> intermediate_targets(const Constraint_set& set, const Eigen::MatrixXd& constrained_rows,
+                                                   const Eigen::MatrixXd& coefficients, const Positions& rest,
+                                                   const Positions& smooth_rest, const Positions& targets,
+                                                   double stage_angle)
+{
+  auto start_motion = [&](std::size_t g) {
+    const std::vector<int>& group = set.groups[g];
+    const Eigen::Index size = static_cast<Eigen::Index>(group.size());
+    Positions smooth(size, 3);
+    Eigen::MatrixXd rows(size, constrained_rows.cols());
+    for(Eigen::Index k = 0; k < size; ++k)
+    {
+      const int position = group[static_cast<std::size_t>(k)];
+      smooth.row(k) = smooth_rest.row(set.constrained[static_cast<std::size_t>(position)]);
+      rows.row(k) = constrained_rows.row(position);
+    }
+    const Positions now = rows * coefficients;
+    return fit_rigid_motion(smooth, now);
+  };
+  return intermediate_targets(set, start_motion, rest, targets, stage_angle);
 }
 
 } // namespace Deformation

@@ -165,21 +165,17 @@ struct Rigid_motion
   }
 };
 
-/// The rigid motion that best maps `from` onto `to` (k×3 each) in the least
-/// squares sense (Kabsch). With one point, or points on a line, the rotation
-/// is underdetermined in at least one direction; the closest rotation to the
-/// identity compatible with the data is returned by the SVD, and a single
-/// point gives a pure translation.
-inline Rigid_motion fit_rigid_motion(const Eigen::Matrix<double, Eigen::Dynamic, 3>& from,
-                                     const Eigen::Matrix<double, Eigen::Dynamic, 3>& to)
+/// The rigid motion that best maps `count` points with centroid
+/// `from_center` onto points with centroid `to_center` (Kabsch), from their
+/// covariance Σ (from_i − from_center)ᵀ (to_i − to_center): see
+/// `fit_rigid_motion()`.
+inline Rigid_motion rigid_motion_from_moments(const Eigen::RowVector3d& from_center,
+                                              const Eigen::RowVector3d& to_center,
+                                              const Eigen::Matrix3d& covariance, Eigen::Index count)
 {
   Rigid_motion motion;
-  const Eigen::RowVector3d from_center = from.colwise().mean();
-  const Eigen::RowVector3d to_center = to.colwise().mean();
-  if(from.rows() > 1)
+  if(count > 1)
   {
-    const Eigen::Matrix3d covariance =
-        (from.rowwise() - from_center).transpose() * (to.rowwise() - to_center);
     const double scale = covariance.cwiseAbs().maxCoeff();
     if(scale > 0)
     {
@@ -207,6 +203,22 @@ inline Rigid_motion fit_rigid_motion(const Eigen::Matrix<double, Eigen::Dynamic,
   }
   motion.translation = to_center.transpose() - motion.rotation * from_center.transpose();
   return motion;
+}
+
+/// The rigid motion that best maps `from` onto `to` (k×3 each) in the least
+/// squares sense (Kabsch). With one point, or points on a line, the rotation
+/// is underdetermined in at least one direction; the closest rotation to the
+/// identity compatible with the data is returned by the SVD, and a single
+/// point gives a pure translation.
+inline Rigid_motion fit_rigid_motion(const Eigen::Matrix<double, Eigen::Dynamic, 3>& from,
+                                     const Eigen::Matrix<double, Eigen::Dynamic, 3>& to)
+{
+  const Eigen::RowVector3d from_center = from.colwise().mean();
+  const Eigen::RowVector3d to_center = to.colwise().mean();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  if(from.rows() > 1)
+    covariance = (from.rowwise() - from_center).transpose() * (to.rowwise() - to_center);
+  return rigid_motion_from_moments(from_center, to_center, covariance, from.rows());
 }
 
 } // namespace Deformation
