@@ -111,12 +111,6 @@ enum Cholmod_factor_form
   /// carried (CHOLMOD's `final_resymbol`): faster than a simplicial
   /// factorization there (416k vertices, 275 flops per entry), for the same
   /// factor.
-  ///
-  /// Its analysis tries both the minimum degree ordering (AMD) and nested
-  /// dissection (METIS, when CHOLMOD has it) and keeps the sparser factor:
-  /// CHOLMOD's default tries nested dissection only when AMD fills in a lot,
-  /// and on the cotangent systems of meshes of 10⁵ vertices and more it gave
-  /// the sparser factor even where AMD's fill was moderate.
   CHOLMOD_SIMPLICIAL_FACTOR
 };
 
@@ -174,16 +168,6 @@ public:
       common.final_pack = 1;
       common.final_monotonic = 1;
       common.final_resymbol = 1;
-      // CHOLMOD's default analysis tries nested dissection (METIS) only
-      // when the minimum degree ordering (AMD) fills in a lot, which the
-      // cotangent systems of meshes of a few hundred thousand vertices do
-      // not reach; there nested dissection still gives the sparser factor,
-      // which every back-substitution reads. Both are tried (after a given
-      // ordering, when there is one) and the sparser is kept.
-      common.nmethods = 3;
-      common.method[0].ordering = CHOLMOD_GIVEN;
-      common.method[1].ordering = CHOLMOD_AMD;
-      common.method[2].ordering = CHOLMOD_METIS;
     }
     cholmod_start(&m_second_common);
   }
@@ -453,15 +437,6 @@ private:
       {
         this->cholmod().status = CHOLMOD_OK;
         this->analyzePattern(A);
-        if((factor() == nullptr || this->cholmod().status < CHOLMOD_OK) && this->cholmod().nmethods != 0 &&
-           this->cholmod().status != CHOLMOD_OUT_OF_MEMORY)
-        {
-          // A CHOLMOD built without METIS refuses that method: its default
-          // strategy then.
-          this->cholmod().nmethods = 0;
-          this->cholmod().status = CHOLMOD_OK;
-          this->analyzePattern(A);
-        }
       }
       if(factor() == nullptr || this->cholmod().status < CHOLMOD_OK)
         return false;
