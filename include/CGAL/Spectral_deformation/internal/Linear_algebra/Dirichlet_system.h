@@ -43,13 +43,13 @@ struct Takes_fill_reducing_ordering<
 /// are prescribed: A is restricted to the free unknowns and factored once,
 /// the prescribed values enter the right-hand side.
 ///
-/// When the solver takes a fill-reducing ordering, the second and later
-/// factorizations of the same matrix (until `forget_matrix()`) reuse one
-/// ordering of the whole matrix, restricted to the free unknowns, instead
-/// of choosing a new one for each free block: on a large mesh, choosing
-/// the ordering costs several times the numeric factorization. The first
-/// factorization keeps the solver's own choice, so that a single set of
-/// prescribed unknowns costs no more than before.
+/// When the solver takes a fill-reducing ordering, every factorization of
+/// the same matrix (until `forget_matrix()`) uses one ordering of the whole
+/// matrix (`fill_reducing_ordering()`), restricted to the free unknowns,
+/// instead of choosing a new one for each free block: on a large mesh,
+/// choosing the ordering costs several times the numeric factorization, and
+/// the solver's choice for the whole matrix weighs nested dissection, which
+/// its default choice for a block skips on these systems.
 template <class SparseSPDSolverTraits>
 class Dirichlet_system
 {
@@ -89,21 +89,20 @@ public:
       return true;
     if constexpr(Takes_fill_reducing_ordering<SparseSPDSolverTraits>::value)
     {
-      if(m_factored_before)
+      if(!m_ordered)
       {
-        if(m_whole_ordering.empty())
-          m_whole_ordering = m_solver.fill_reducing_ordering(A);
-        if(static_cast<Eigen::Index>(m_whole_ordering.size()) == n)
-        {
-          std::vector<int> restricted;
-          restricted.reserve(static_cast<std::size_t>(m));
-          for(int i : m_whole_ordering)
-            if(m_free_index[static_cast<std::size_t>(i)] >= 0)
-              restricted.push_back(m_free_index[static_cast<std::size_t>(i)]);
-          m_solver.set_fill_reducing_ordering(std::move(restricted));
-        }
+        m_whole_ordering = m_solver.fill_reducing_ordering(A);
+        m_ordered = true;
       }
-      m_factored_before = true;
+      if(static_cast<Eigen::Index>(m_whole_ordering.size()) == n)
+      {
+        std::vector<int> restricted;
+        restricted.reserve(static_cast<std::size_t>(m));
+        for(int i : m_whole_ordering)
+          if(m_free_index[static_cast<std::size_t>(i)] >= 0)
+            restricted.push_back(m_free_index[static_cast<std::size_t>(i)]);
+        m_solver.set_fill_reducing_ordering(std::move(restricted));
+      }
     }
     return m_solver.factor(free_block);
   }
@@ -112,7 +111,7 @@ public:
   void forget_matrix()
   {
     m_whole_ordering.clear();
-    m_factored_before = false;
+    m_ordered = false;
   }
 
   /// Solves with the right-hand side `rhs` (n×d) and the values of the
@@ -152,9 +151,10 @@ public:
 
 private:
   SparseSPDSolverTraits m_solver;
-  // One ordering of the whole matrix, and whether a free block of it was factored.
+  // One ordering of the whole matrix (empty when the solver found none), and
+  // whether it was sought.
   std::vector<int> m_whole_ordering;
-  bool m_factored_before = false;
+  bool m_ordered = false;
   std::vector<int> m_free;
   std::vector<int> m_free_index;
   Eigen::SparseMatrix<double> m_coupling;
