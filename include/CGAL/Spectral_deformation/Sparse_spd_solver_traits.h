@@ -30,6 +30,22 @@
 #endif
 
 namespace CGAL {
+#ifdef CGAL_SSMD_USE_CHOLMOD
+namespace Spectral_deformation {
+namespace internal {
+
+// The lock of CHOLMOD's analyses (`Cholmod_llt_solver_traits`): one for the
+// whole process, whichever form of the factor, since METIS's random
+// generator is shared by all of them.
+inline std::mutex& cholmod_analysis_mutex()
+{
+  static std::mutex mutex;
+  return mutex;
+}
+
+} // namespace internal
+} // namespace Spectral_deformation
+#endif
 
 /// \ingroup PkgSpectralSurfaceMeshDeformationTraits
 /// A model of `SparseSPDSolverTraits` built on an Eigen sparse Cholesky-type
@@ -451,14 +467,8 @@ private:
     // their last bits.
     static cholmod_factor* analyze_serialized(cholmod_sparse& a, cholmod_common& common)
     {
-      std::lock_guard<std::mutex> lock(analysis_mutex());
+      std::lock_guard<std::mutex> lock(Spectral_deformation::internal::cholmod_analysis_mutex());
       return cholmod_analyze(&a, &common);
-    }
-
-    static std::mutex& analysis_mutex()
-    {
-      static std::mutex mutex;
-      return mutex;
     }
 
     // Eigen's compute() when every allocation succeeds. When CHOLMOD runs
@@ -475,7 +485,7 @@ private:
       if(ordering == nullptr || factor() == nullptr || this->cholmod().status < CHOLMOD_OK)
       {
         this->cholmod().status = CHOLMOD_OK;
-        std::lock_guard<std::mutex> lock(analysis_mutex());
+        std::lock_guard<std::mutex> lock(Spectral_deformation::internal::cholmod_analysis_mutex());
         this->analyzePattern(A);
       }
       if(factor() == nullptr || this->cholmod().status < CHOLMOD_OK)
