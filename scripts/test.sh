@@ -1,15 +1,20 @@
 #!/usr/bin/env bash
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
 # SPDX-License-Identifier: GPL-3.0-or-later
-# The tests: installs what is missing, builds in Release, runs the Catch2
-# suite, the examples and the documentation check through ctest.
+# The tests: installs what is missing, builds in Release and runs through
+# ctest the examples, the command-line tool, the Python package, the
+# benchmarks' smoke runs, the documentation check and the Catch2 tests of
+# types, of the build and of allocation failures; then the Catch2 tests that
+# run the algorithms, built once, with AddressSanitizer and
+# UndefinedBehaviorSanitizer (scripts/test_sanitized.sh): compiling them a
+# second time in Release would double the time of this script.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${SSMD_BUILD_DIR:-$root/build}"
 
 bash "$root/scripts/install_dependencies.sh"
-bash "$root/scripts/build.sh" -DSSMD_BUILD_TESTS=ON -DSSMD_BUILD_EXAMPLES=ON
+bash "$root/scripts/build.sh" -DSSMD_BUILD_TESTS=ON -DSSMD_BUILD_SANITIZABLE_TESTS=OFF -DSSMD_BUILD_EXAMPLES=ON
 bash "$root/scripts/fetch_sample_meshes.sh"   # the examples run on a sample mesh
 bash "$root/scripts/install_python_package.sh"
-cd "$build"
-ctest --output-on-failure --timeout 900 -j "${SSMD_JOBS:-$(nproc)}"
+(cd "$build" && ctest --output-on-failure --timeout 900 -j "${SSMD_JOBS:-$(nproc)}")
+bash "$root/scripts/test_sanitized.sh"
