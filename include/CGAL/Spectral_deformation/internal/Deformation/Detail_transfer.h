@@ -181,8 +181,11 @@ public:
   }
 
   /// The Poisson right-hand side for the smooth deformed positions (valid
-  /// until the next call).
-  const Eigen::MatrixXd& right_hand_side(const Positions& smooth_deformed) const
+  /// until the next call); `SmoothPositions` is `Positions` (one row per
+  /// vertex) or `Smooth_rotation_field::Vertex_major_positions` (one column
+  /// per vertex), as for the transfers below.
+  template <class SmoothPositions>
+  const Eigen::MatrixXd& right_hand_side(const SmoothPositions& smooth_deformed) const
   {
     return m_rotated_edges.evaluate(smooth_deformed);
   }
@@ -192,7 +195,8 @@ public:
   /// anchored vertex is translated by the mean offset to `targets` at its
   /// `constrained` vertices. Returns false when a solve fails (`result` is
   /// then unspecified).
-  bool transfer_soft(const Positions& smooth_deformed, const Positions& anchored_positions,
+  template <class SmoothPositions>
+  bool transfer_soft(const SmoothPositions& smooth_deformed, const Positions& anchored_positions,
                      const std::vector<int>& constrained, const Positions& targets,
                      Positions& result) const
   {
@@ -227,7 +231,8 @@ public:
   /// Exact policy: positions with the prescribed vertices at `prescribed_positions`
   /// (n×3, rows of other vertices ignored). Returns false when the solve
   /// fails (`result` is then unspecified).
-  bool transfer_exact(const Positions& smooth_deformed, const Positions& prescribed_positions,
+  template <class SmoothPositions>
+  bool transfer_exact(const SmoothPositions& smooth_deformed, const Positions& prescribed_positions,
                       Positions& result) const
   {
     if(!m_dirichlet_ready)

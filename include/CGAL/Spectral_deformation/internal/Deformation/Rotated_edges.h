@@ -53,6 +53,19 @@ public:
   const Eigen::MatrixXd& evaluate(const Positions& smooth_deformed) const
   {
     m_rotations.compute(smooth_deformed, m_rotation_workspace);
+    return evaluate_with_rotations();
+  }
+
+  /// As above, with the positions one column per vertex.
+  const Eigen::MatrixXd& evaluate(const Smooth_rotation_field::Vertex_major_positions& smooth_deformed) const
+  {
+    m_rotations.compute(smooth_deformed, m_rotation_workspace);
+    return evaluate_with_rotations();
+  }
+
+private:
+  const Eigen::MatrixXd& evaluate_with_rotations() const
+  {
     const std::vector<Eigen::Matrix3d>& R = m_rotation_workspace;
     const Cotangent_adjacency& a = m_rotations.adjacency();
     const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_edge_rest_vertex_major.cols());
@@ -79,7 +92,6 @@ public:
     return rhs;
   }
 
-private:
   // ½ w_ij (v_i − v_j) for the edge s of the adjacency, j its neighbour.
   Eigen::Vector3d half_edge(const Cotangent_adjacency& a, int s, const Eigen::Vector3d& vi) const
   {

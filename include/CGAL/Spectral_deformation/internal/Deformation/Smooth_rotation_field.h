@@ -122,32 +122,40 @@ public:
   /// `smooth_deformed`.
   void compute(const Positions& smooth_deformed, std::vector<Eigen::Matrix3d>& rotations) const
   {
-    std::vector<Eigen::Matrix3d>& C = m_covariances;
     const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_adjacency.number_of_vertices());
-    C.resize(static_cast<std::size_t>(n));
-    rotations.resize(static_cast<std::size_t>(n));
+    // A neighbour's three coordinates in one cache line instead of three.
     m_vertex_major.resize(3, n);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) if(n > 20000)
+#endif
+    for(std::ptrdiff_t i = 0; i < n; ++i)
+      m_vertex_major.col(i) = smooth_deformed.row(i).transpose();
+    compute(m_vertex_major, rotations);
+  }
+
+  /// As above, with the positions one column per vertex.
+  void compute(const Vertex_major_positions& smooth_deformed, std::vector<Eigen::Matrix3d>& rotations) const
+  {
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_adjacency.number_of_vertices());
+    rotations.resize(static_cast<std::size_t>(n));
+    // Only the vertices that inherit and those they inherit from keep their
+    // covariance (a slot each): the others turn it into their rotation at
+    // once, which saves an array of n matrices.
+    std::vector<Eigen::Matrix3d>& C = m_covariances;
+    C.resize(m_slot_count);
     // One pass: the covariance of each one-ring, and the rotation of the
     // vertices that do not inherit.
 #ifdef _OPENMP
-#pragma omp parallel if(n > 20000)
+#pragma omp parallel for schedule(static) if(n > 20000)
 #endif
+    for(std::ptrdiff_t i = 0; i < n; ++i)
     {
-      // A neighbour's three coordinates in one cache line instead of three.
-#ifdef _OPENMP
-#pragma omp for schedule(static)
-#endif
-      for(std::ptrdiff_t i = 0; i < n; ++i)
-        m_vertex_major.col(i) = smooth_deformed.row(i).transpose();
-#ifdef _OPENMP
-#pragma omp for schedule(static)
-#endif
-      for(std::ptrdiff_t i = 0; i < n; ++i)
-      {
-        C[static_cast<std::size_t>(i)] = covariance(m_vertex_major, static_cast<int>(i));
-        if(!m_inherits[static_cast<std::size_t>(i)])
-          rotations[static_cast<std::size_t>(i)] = nearest_rotation(C[static_cast<std::size_t>(i)]);
-      }
+      const Eigen::Matrix3d c = covariance(smooth_deformed, static_cast<int>(i));
+      const int slot = m_slot[static_cast<std::size_t>(i)];
+      if(slot >= 0)
+        C[static_cast<std::size_t>(slot)] = c;
+      if(!m_inherits[static_cast<std::size_t>(i)])
+        rotations[static_cast<std::size_t>(i)] = nearest_rotation(c);
     }
     // The inherited covariances layer after layer, in order; then the
     // rotations of the inheriting vertices, which are independent of each
@@ -158,9 +166,8 @@ public:
       const int begin = m_parent_start[k], end = m_parent_start[k + 1];
       Eigen::Matrix3d inherited = Eigen::Matrix3d::Zero();
       for(int p = begin; p < end; ++p)
-        inherited += C[static_cast<std::size_t>(m_parents[static_cast<std::size_t>(p)])];
-      const std::size_t i = static_cast<std::size_t>(m_order[k]);
-      C[i] += inherited / double(end - begin);
+        inherited += C[static_cast<std::size_t>(m_parent_slots[static_cast<std::size_t>(p)])];
+      C[static_cast<std::size_t>(m_order_slots[k])] += inherited / double(end - begin);
     }
     const std::ptrdiff_t inheriting = static_cast<std::ptrdiff_t>(m_order.size());
 #ifdef _OPENMP
@@ -169,7 +176,7 @@ public:
     for(std::ptrdiff_t k = 0; k < inheriting; ++k)
     {
       const std::size_t i = static_cast<std::size_t>(m_order[static_cast<std::size_t>(k)]);
-      rotations[i] = nearest_rotation(C[i]);
+      rotations[i] = nearest_rotation(C[static_cast<std::size_t>(m_order_slots[static_cast<std::size_t>(k)])]);
     }
   }
 
@@ -251,6 +258,21 @@ private:
     m_inherits.assign(determined.size(), 0);
     for(int i : m_order)
       m_inherits[static_cast<std::size_t>(i)] = 1;
+    // A slot for every vertex whose covariance is read after the first pass.
+    m_slot.assign(determined.size(), -1);
+    m_slot_count = 0;
+    const auto slot_of = [this](int i) {
+      int& slot = m_slot[static_cast<std::size_t>(i)];
+      if(slot < 0)
+        slot = static_cast<int>(m_slot_count++);
+      return slot;
+    };
+    m_order_slots.clear();
+    for(int i : m_order)
+      m_order_slots.push_back(slot_of(i));
+    m_parent_slots.clear();
+    for(int j : m_parents)
+      m_parent_slots.push_back(slot_of(j));
   }
 
   Cotangent_adjacency m_adjacency;
@@ -260,7 +282,11 @@ private:
   std::vector<char> m_inherits;    // per vertex: in m_order
   std::vector<int> m_parents;      // their neighbours in the previous layer
   std::vector<int> m_parent_start; // offsets into m_parents, per entry of m_order
-  mutable std::vector<Eigen::Matrix3d> m_covariances;
+  std::vector<int> m_slot;         // per vertex: its covariance's index in m_covariances, or -1
+  std::size_t m_slot_count = 0;
+  std::vector<int> m_order_slots;  // the slots of m_order
+  std::vector<int> m_parent_slots; // the slots of m_parents
+  mutable std::vector<Eigen::Matrix3d> m_covariances; // by slot
 };
 
 } // namespace Deformation

@@ -179,6 +179,12 @@ public:
   }
   /// As `shape()`, into `result`, whose storage is reused.
   void shape(const Eigen::MatrixXd& coefficients, Positions& result) const { multiply(coefficients, result); }
+  /// As `shape()`, transposed (one column per vertex), into `result`, whose
+  /// storage is reused.
+  void shape(const Eigen::MatrixXd& coefficients, Linear_algebra::row_blocks::Rows3& result) const
+  {
+    multiply(coefficients, result);
+  }
   const Eigen::MatrixXd& rest_coefficients() const { return m_rest_coefficients; }
   /// H_c: the rows of the basis of the constrained vertices of `preprocess()`.
   const Eigen::MatrixXd& constrained_rows() const { return m_constrained_rows; }
@@ -374,7 +380,8 @@ private:
       m_float_panels = Basis_panels<float>();
   }
 
-  void multiply(const Eigen::MatrixXd& coefficients, Positions& shape) const
+  template <typename Shape>
+  void multiply(const Eigen::MatrixXd& coefficients, Shape& shape) const
   {
     if(m_single_precision)
       m_float_panels.multiply(coefficients, shape);

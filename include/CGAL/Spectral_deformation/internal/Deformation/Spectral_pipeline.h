@@ -43,6 +43,7 @@ using Memory::process_wide_tuning_of;
 using Mesh::Positions;
 using Mesh::Region_geometry;
 using Mesh::fingerprint;
+typedef Smooth_rotation_field::Vertex_major_positions Vertex_major_positions;
 
 /// The settings of a spectral deformation that its pipeline reads.
 struct Spectral_settings
@@ -179,7 +180,8 @@ public:
     report.solve_seconds = seconds_since(start);
 
     const auto transfer_start = std::chrono::steady_clock::now();
-    Positions& smooth_deformed = m_smooth_deformed;
+    // One column per vertex, as the rotation fit of the detail transfer reads it.
+    Vertex_major_positions& smooth_deformed = m_smooth_deformed;
     m_solver.shape(m_pending, smooth_deformed);
     const bool transferred = (m_policy == EXACT_CONSTRAINTS)
                                  ? transfer_exact(region, set, targets, smooth_deformed, result)
@@ -298,7 +300,7 @@ private:
   }
 
   bool transfer_exact(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
-                      const Positions& smooth_deformed, Positions& result)
+                      const Vertex_major_positions& smooth_deformed, Positions& result)
   {
     Positions& prescribed = m_prescribed;
     prescribed.resize(region.arrays.positions.rows(), 3);
@@ -310,7 +312,7 @@ private:
   // The fixed vertices around the ROI are anchored: only the control
   // vertices are soft.
   bool transfer_soft(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
-                     const Positions& smooth_deformed, Positions& result)
+                     const Vertex_major_positions& smooth_deformed, Positions& result)
   {
     const Positions& rest = region.arrays.positions;
     Positions& anchored = m_prescribed;
@@ -353,7 +355,8 @@ private:
   Eigen::MatrixXd m_coefficients, m_pending;
   // Buffers of a drag, kept between drags: on large meshes, fresh pages for
   // them cost more than the arithmetic.
-  Positions m_smooth_deformed, m_prescribed;
+  Vertex_major_positions m_smooth_deformed;
+  Positions m_prescribed;
   bool m_has_solution = false;
 };
 

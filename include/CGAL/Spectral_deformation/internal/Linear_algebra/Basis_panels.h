@@ -36,6 +36,23 @@ namespace Linear_algebra {
 namespace row_blocks {
 
 typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Columns3;
+// The same n×3 values one column per vertex (3×n), as the rotation fit of
+// the detail transfer reads them.
+typedef Eigen::Matrix<double, 3, Eigen::Dynamic> Rows3;
+
+inline void resize(Columns3& shape, Eigen::Index n) { shape.resize(n, 3); }
+inline void resize(Rows3& shape, Eigen::Index n) { shape.resize(3, n); }
+
+template <typename Block>
+void store(const Block& block, Eigen::Index start, Columns3& shape)
+{
+  shape.middleRows(start, block.rows()) = block;
+}
+template <typename Block>
+void store(const Block& block, Eigen::Index start, Rows3& shape)
+{
+  shape.middleCols(start, block.rows()) = block.transpose();
+}
 
 // A float column is widened once into `buffer` rather than inside every
 // expression that reads it: Eigen re-evaluates a lazy cast at each use.
@@ -54,11 +71,11 @@ auto in_double(const Column& column, Buffer& buffer)
   }
 }
 
-template <Eigen::Index BlockRows, typename BlockOf, typename Coefficients>
+template <Eigen::Index BlockRows, typename BlockOf, typename Coefficients, typename Shape>
 void multiply(Eigen::Index n, Eigen::Index m, const BlockOf& block_of, const Coefficients& coefficients,
-              Columns3& shape)
+              Shape& shape)
 {
-  shape.resize(n, 3);
+  resize(shape, n);
   const Eigen::Matrix<double, Eigen::Dynamic, 3> c = coefficients;
   const long long blocks = (n + BlockRows - 1) / BlockRows;
 #ifdef _OPENMP
@@ -81,7 +98,7 @@ void multiply(Eigen::Index n, Eigen::Index m, const BlockOf& block_of, const Coe
       s.col(1) += c(k, 1) * column;
       s.col(2) += c(k, 2) * column;
     }
-    shape.middleRows(start, h.rows()) = s;
+    store(s, start, shape);
   }
 }
 
@@ -153,10 +170,11 @@ public:
   Eigen::Index rows() const { return m_basis == nullptr ? 0 : m_basis->rows(); }
   Eigen::Index cols() const { return m_basis == nullptr ? 0 : m_basis->cols(); }
 
-  /// `shape` = H `coefficients` (n×3), `coefficients` m×3; `shape` must not
-  /// alias `coefficients`.
-  template <typename Coefficients>
-  void multiply(const Coefficients& coefficients, Columns3& shape) const
+  /// `shape` = H `coefficients` (n×3, or its transpose when `Shape` is
+  /// `row_blocks::Rows3`), `coefficients` m×3; `shape` must not alias
+  /// `coefficients`.
+  template <typename Coefficients, typename Shape>
+  void multiply(const Coefficients& coefficients, Shape& shape) const
   {
     row_blocks::multiply<512>(rows(), cols(), block_of(), coefficients, shape);
   }
@@ -205,10 +223,11 @@ public:
   Eigen::Index cols() const { return m_cols; }
   std::size_t bytes() const { return m_data.size() * sizeof(Scalar); }
 
-  /// `shape` = H `coefficients` (n×3), `coefficients` m×3; `shape` must not
-  /// alias `coefficients`.
-  template <typename Coefficients>
-  void multiply(const Coefficients& coefficients, Columns3& shape) const
+  /// `shape` = H `coefficients` (n×3, or its transpose when `Shape` is
+  /// `row_blocks::Rows3`), `coefficients` m×3; `shape` must not alias
+  /// `coefficients`.
+  template <typename Coefficients, typename Shape>
+  void multiply(const Coefficients& coefficients, Shape& shape) const
   {
     row_blocks::multiply<panel_rows>(m_rows, m_cols, block_of(), coefficients, shape);
   }
