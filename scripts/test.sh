@@ -6,8 +6,8 @@
 # benchmarks' smoke runs, the documentation check and the Catch2 tests of
 # types, of the build and of allocation failures; then the Catch2 tests that
 # run the algorithms, built once, with AddressSanitizer and
-# UndefinedBehaviorSanitizer (scripts/test_sanitized.sh): compiling them a
-# second time in Release would double the time of this script.
+# UndefinedBehaviorSanitizer (scripts/test_sanitized.sh), so that no test
+# program is compiled twice.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${SSMD_BUILD_DIR:-$root/build}"
