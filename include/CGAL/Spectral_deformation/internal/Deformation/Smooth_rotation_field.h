@@ -243,7 +243,8 @@ private:
         }
       }
     }
-    m_parents.clear();
+    // The neighbours of each in the previous layer, by slot (below).
+    std::vector<int> parents;
     m_parent_start.assign(1, 0);
     for(int i : m_order)
     {
@@ -251,9 +252,9 @@ private:
       {
         const int j = a.neighbours[static_cast<std::size_t>(s)];
         if(layer[static_cast<std::size_t>(j)] == layer[static_cast<std::size_t>(i)] - 1)
-          m_parents.push_back(j);
+          parents.push_back(j);
       }
-      m_parent_start.push_back(static_cast<int>(m_parents.size()));
+      m_parent_start.push_back(static_cast<int>(parents.size()));
     }
     m_inherits.assign(determined.size(), 0);
     for(int i : m_order)
@@ -271,7 +272,7 @@ private:
     for(int i : m_order)
       m_order_slots.push_back(slot_of(i));
     m_parent_slots.clear();
-    for(int j : m_parents)
+    for(int j : parents)
       m_parent_slots.push_back(slot_of(j));
   }
 
@@ -280,12 +281,11 @@ private:
   mutable Vertex_major_positions m_vertex_major;
   std::vector<int> m_order;        // undetermined vertices, breadth-first
   std::vector<char> m_inherits;    // per vertex: in m_order
-  std::vector<int> m_parents;      // their neighbours in the previous layer
-  std::vector<int> m_parent_start; // offsets into m_parents, per entry of m_order
+  std::vector<int> m_parent_start; // offsets into m_parent_slots, per entry of m_order
   std::vector<int> m_slot;         // per vertex: its covariance's index in m_covariances, or -1
   std::size_t m_slot_count = 0;
   std::vector<int> m_order_slots;  // the slots of m_order
-  std::vector<int> m_parent_slots; // the slots of m_parents
+  std::vector<int> m_parent_slots; // the slots of their neighbours in the previous layer
   mutable std::vector<Eigen::Matrix3d> m_covariances; // by slot
 };
 
