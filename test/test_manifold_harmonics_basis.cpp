@@ -643,6 +643,160 @@ TEST_CASE("Dirichlet systems: a later set of prescribed unknowns reuses one orde
   CHECK(largest < 1e-9 * rhs.cwiseAbs().maxCoeff());
 }
 
+namespace {
+
+// The solution of the Dirichlet system of `Q` for the prescribed flags,
+// checked against an independent dense solve of the free block.
+Eigen::MatrixXd dense_dirichlet_solution(const Eigen::SparseMatrix<double>& Q, const std::vector<char>& prescribed,
+                                         const Eigen::MatrixXd& rhs, const Eigen::MatrixXd& values)
+{
+  std::vector<int> free;
+  for(std::size_t i = 0; i < prescribed.size(); ++i)
+    if(!prescribed[i])
+      free.push_back(static_cast<int>(i));
+  const Eigen::MatrixXd dense = Q;
+  Eigen::MatrixXd fixed_values = values;
+  for(int i : free)
+    fixed_values.row(i).setZero();
+  const Eigen::MatrixXd b = rhs - dense * fixed_values;
+  const Eigen::Index m = static_cast<Eigen::Index>(free.size());
+  Eigen::MatrixXd block(m, m), block_rhs(m, rhs.cols());
+  for(Eigen::Index r = 0; r < m; ++r)
+  {
+    block_rhs.row(r) = b.row(free[static_cast<std::size_t>(r)]);
+    for(Eigen::Index c = 0; c < m; ++c)
+      block(r, c) = dense(free[static_cast<std::size_t>(r)], free[static_cast<std::size_t>(c)]);
+  }
+  const Eigen::MatrixXd x = block.ldlt().solve(block_rhs);
+  Eigen::MatrixXd out = values;
+  for(Eigen::Index r = 0; r < m; ++r)
+    out.row(free[static_cast<std::size_t>(r)]) = x.row(r);
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("Dirichlet systems: sets that differ in a few unknowns update the factor and solve as the dense system",
+          "[basis][solver]")
+{
+  using CGAL::Spectral_deformation::internal::Linear_algebra::Dirichlet_system;
+  // Two components, each with prescribed vertices.
+  Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(16));
+  const Eigen::Index plane_vertices = static_cast<Eigen::Index>(mesh.number_of_vertices());
+  mesh.join(to_mesh<Surface_mesh>(icosphere(2)));
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
+  const Eigen::Index n = Q.rows();
+  const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(n, 3), values = Eigen::MatrixXd::Random(n, 3);
+  std::vector<char> prescribed(static_cast<std::size_t>(n), 0);
+  for(Eigen::Index i = 0; i < plane_vertices / 10; ++i)
+    prescribed[static_cast<std::size_t>(i)] = 1;
+  prescribed[static_cast<std::size_t>(plane_vertices)] = 1;
+  Dirichlet_system<CGAL::Cholmod_simplicial_sparse_spd_solver_traits> system;
+  // On a mesh this small a factorization costs less than most updates: the
+  // budget of the updates is lifted, then withdrawn for the last set.
+  system.solver().set_row_update_budget(std::numeric_limits<double>::infinity());
+  REQUIRE(system.factor(Q, prescribed));
+  CHECK_FALSE(system.solver().rows_updated());
+  auto check_solution = [&](bool updated) {
+    CHECK(system.solver().rows_updated() == updated);
+#ifdef _OPENMP
+    CHECK(system.solver().solves_in_subtrees());
+#endif
+    Eigen::MatrixXd x;
+    REQUIRE(system.solve(rhs, values, x));
+    const Eigen::MatrixXd expected = dense_dirichlet_solution(Q, prescribed, rhs, values);
+    CHECK((x - expected).norm() < 1e-9 * expected.norm());
+    for(Eigen::Index i = 0; i < n; ++i)
+      if(prescribed[static_cast<std::size_t>(i)])
+        CHECK(x.row(i) == values.row(i));
+  };
+  // A vertex taken in the middle of the plane, one on the sphere.
+  prescribed[static_cast<std::size_t>(plane_vertices / 2)] = 1;
+  prescribed[static_cast<std::size_t>(n - 1)] = 1;
+  REQUIRE(system.factor(Q, prescribed));
+  check_solution(true);
+  // Two released, a band of twenty taken.
+  prescribed[0] = prescribed[3] = 0;
+  for(Eigen::Index i = plane_vertices / 3; i < plane_vertices / 3 + 20; ++i)
+    prescribed[static_cast<std::size_t>(i)] = 1;
+  REQUIRE(system.factor(Q, prescribed));
+  check_solution(true);
+  // Back to a set close to the first one.
+  for(Eigen::Index i = plane_vertices / 3; i < plane_vertices / 3 + 20; ++i)
+    prescribed[static_cast<std::size_t>(i)] = 0;
+  REQUIRE(system.factor(Q, prescribed));
+  check_solution(true);
+  // Half of the vertices change, without a budget for updates: a new
+  // factorization.
+  system.solver().set_row_update_budget(0);
+  for(Eigen::Index i = 0; i < n; i += 2)
+    prescribed[static_cast<std::size_t>(i)] = !prescribed[static_cast<std::size_t>(i)];
+  REQUIRE(system.factor(Q, prescribed));
+  check_solution(false);
+}
+
+TEST_CASE("CHOLMOD simplicial solver traits: rows replaced by updates give the factor of the new matrix",
+          "[basis][solver]")
+{
+  // A mass term large enough that the matrix stays positive definite when
+  // some of its rows change.
+  Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(20));
+  const Eigen::SparseMatrix<double> A =
+      CGAL::cotangent_stiffness_matrix(mesh) + 100 * CGAL::lumped_mass_matrix(mesh);
+  const Eigen::Index n = A.rows();
+  // B: the rows and columns of a few vertices from the matrix of the mesh
+  // with those vertices moved (new couplings, same pattern).
+  const std::vector<int> rows = {7, 150, 151, 300};
+  for(int r : rows)
+  {
+    const Surface_mesh::Vertex_index v(static_cast<Surface_mesh::size_type>(r));
+    mesh.point(v) = mesh.point(v) + Kernel::Vector_3(0.002, -0.003, 0.004);
+  }
+  const Eigen::SparseMatrix<double> moved =
+      CGAL::cotangent_stiffness_matrix(mesh) + 100 * CGAL::lumped_mass_matrix(mesh);
+  std::vector<char> listed(static_cast<std::size_t>(n), 0);
+  for(int r : rows)
+    listed[static_cast<std::size_t>(r)] = 1;
+  std::vector<Eigen::Triplet<double>> entries;
+  for(int k = 0; k < A.outerSize(); ++k)
+    for(Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it)
+    {
+      const bool replaced = listed[static_cast<std::size_t>(it.row())] || listed[static_cast<std::size_t>(it.col())];
+      entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()),
+                           replaced ? moved.coeff(it.row(), it.col()) : it.value());
+    }
+  Eigen::SparseMatrix<double> B(n, n);
+  B.setFromTriplets(entries.begin(), entries.end());
+  REQUIRE((B - A).norm() > 1e-6 * A.norm());
+  const Eigen::MatrixXd right_hand_sides = Eigen::MatrixXd::Random(n, 3);
+  const Eigen::LDLT<Eigen::MatrixXd> dense(B);
+  REQUIRE(dense.vectorD().minCoeff() > 0);
+  const Eigen::MatrixXd expected = dense.solve(right_hand_sides);
+  // Updates without a limit (on a mesh this small they cost more than a
+  // factorization), then none.
+  for(const double budget : {std::numeric_limits<double>::infinity(), 0.0})
+  {
+    CGAL::Cholmod_simplicial_sparse_spd_solver_traits solver;
+    solver.set_row_update_budget(budget);
+    REQUIRE(solver.factor(A));
+    REQUIRE(solver.refactor_rows(B, rows));
+    CHECK(solver.rows_updated() == (budget > 0));
+    Eigen::MatrixXd X;
+    REQUIRE(solver.solve(right_hand_sides, X));
+    CHECK((X - expected).norm() < 1e-10 * expected.norm());
+    // A row that makes the matrix indefinite: the updates fail, so does the
+    // factorization that replaces them; the solver then refuses to solve.
+    Eigen::SparseMatrix<double> indefinite = B;
+    indefinite.coeffRef(150, 150) = -1.0;
+    CHECK_FALSE(solver.refactor_rows(indefinite, {150}));
+    CHECK_FALSE(solver.solve(right_hand_sides, X));
+    // And factors again afterwards.
+    REQUIRE(solver.factor(B));
+    REQUIRE(solver.solve(right_hand_sides, X));
+    CHECK((X - expected).norm() < 1e-10 * expected.norm());
+  }
+}
+
 TEST_CASE("CHOLMOD simplicial solver traits: solves split by subtrees agree with an independent solver",
           "[basis][solver]")
 {

@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -432,6 +433,82 @@ TEST_CASE("the factorization made during the basis gives the result of the one m
   SUCCEED("without OpenMP the package runs on one thread: nothing overlaps");
 #endif
 }
+
+#ifdef CGAL_SSMD_USE_CHOLMOD
+namespace {
+
+// The detail transfer's solver with row updates unlimited (`Unlimited`) or
+// none, counting the constraint sets it updated instead of factoring.
+template <bool Unlimited>
+struct Row_update_solver : CGAL::Cholmod_simplicial_sparse_spd_solver_traits
+{
+  typedef CGAL::Cholmod_simplicial_sparse_spd_solver_traits Base;
+  static int updates;
+  Row_update_solver() { set_row_update_budget(Unlimited ? std::numeric_limits<double>::infinity() : 0.0); }
+  bool refactor_rows(const Matrix& A, const std::vector<int>& rows)
+  {
+    const bool factored = Base::refactor_rows(A, rows);
+    if(factored && rows_updated())
+      ++updates;
+    return factored;
+  }
+};
+template <bool Unlimited>
+int Row_update_solver<Unlimited>::updates = 0;
+
+// The bar bent by its top end, then one top vertex released and a vertex of
+// the middle taken and pulled sideways: the positions after both.
+template <class Solver>
+Eigen::MatrixXd bend_then_change_constraints(const Soup& soup, std::vector<Eigen::RowVector3d>& targets,
+                                             std::vector<Eigen::RowVector3d>& reached)
+{
+  typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh, CGAL::Default, CGAL::Default,
+                                                  CGAL::SPECTRAL_DUAL_LAPLACIAN, CGAL::Default, Solver>
+      Deformation;
+  Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  Deformation deformation(mesh);
+  std::vector<SM_vertex> all = vertex_list(mesh), bottom, top;
+  select_ends(mesh, 0.3, 4.7, bottom, top);
+  deformation.insert_roi_vertices(all.begin(), all.end());
+  deformation.insert_control_vertices(bottom.begin(), bottom.end());
+  deformation.insert_control_vertices(top.begin(), top.end());
+  const Eigen::Quaternion<double> quarter(Eigen::AngleAxisd(pi / 4, Eigen::Vector3d::UnitX()));
+  deformation.rotate(top.begin(), top.end(), Eigen::Vector3d(0, 0, 4.7), quarter);
+  deformation.deform(5, 0.0);
+  REQUIRE(deformation.deform_report().success);
+  SM_vertex middle = all.front();
+  for(SM_vertex v : all)
+    if(std::abs(mesh.point(v).z() - 2.5) < std::abs(mesh.point(middle).z() - 2.5))
+      middle = v;
+  deformation.erase_control_vertex(top.front());
+  deformation.insert_control_vertex(middle);
+  const Point pulled = mesh.point(middle) + Kernel::Vector_3(0.3, 0, 0);
+  deformation.set_target_position(middle, pulled);
+  deformation.deform(5, 0.0);
+  INFO(deformation.deform_report().message);
+  REQUIRE(deformation.deform_report().success);
+  targets = {row(pulled), row(deformation.target_position(top.back()))};
+  reached = {row(mesh.point(middle)), row(mesh.point(top.back()))};
+  return positions_of(mesh);
+}
+
+} // namespace
+
+TEST_CASE("a constraint set updated row by row gives the result of a new factorization", "[deformation]")
+{
+  const Soup soup = bar(16, 2);
+  std::vector<Eigen::RowVector3d> targets, reached, refactored_targets, refactored_reached;
+  const Eigen::MatrixXd updated = bend_then_change_constraints<Row_update_solver<true>>(soup, targets, reached);
+  const Eigen::MatrixXd refactored =
+      bend_then_change_constraints<Row_update_solver<false>>(soup, refactored_targets, refactored_reached);
+  CHECK(Row_update_solver<true>::updates >= 1);
+  CHECK(Row_update_solver<false>::updates == 0);
+  CHECK((updated - refactored).rowwise().norm().maxCoeff() < 1e-9 * diagonal_of(updated));
+  // The exact policy: the new control vertex and the remaining top ones on their targets.
+  for(std::size_t k = 0; k < targets.size(); ++k)
+    CHECK((reached[k] - targets[k]).norm() < 1e-12 * diagonal_of(updated));
+}
+#endif
 
 // Process-wide tuning changes how fast the factorizations and the basis are
 // made, not what they are: switched on a prepared region, it keeps the basis,

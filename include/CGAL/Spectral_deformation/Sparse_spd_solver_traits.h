@@ -321,20 +321,73 @@ public:
 #endif
       computed = m_solver.compute_checked(A, ordering);
     m_factored = computed;
+    m_rows_updated = false;
     m_factor_nonzeros = computed ? m_solver.cholmod().lnz : 0.0;
-    m_subtree_solve = Spectral_deformation::internal::Linear_algebra::Two_subtree_triangular_solve();
-    const cholmod_factor* L = m_factored ? m_solver.factor() : nullptr;
-    if(Form == CHOLMOD_SIMPLICIAL_FACTOR && L != nullptr && !L->is_super && L->is_ll &&
-       L->itype == CHOLMOD_INT && L->xtype == CHOLMOD_REAL && L->dtype == CHOLMOD_DOUBLE)
-    {
-      m_subtree_solve.analyze(static_cast<int>(L->n), static_cast<const int*>(L->p),
-                              static_cast<const int*>(L->i));
-      const int* permutation = static_cast<const int*>(L->Perm);
-      m_factor_position.resize(L->n);
-      for(int k = 0; k < static_cast<int>(L->n); ++k)
-        m_factor_position[permutation != nullptr ? permutation[k] : k] = k;
-    }
+    m_factorization_flops = computed ? m_solver.cholmod().fl : 0.0;
+    m_update_entries = 0;
+    analyze_solves();
     return m_factored;
+  }
+
+  /// The share of a factorization's cost that the row updates of
+  /// `refactor_rows()` may take before it factors anew instead (see there).
+  double row_update_budget() const { return m_row_update_budget; }
+
+  /// Sets `row_update_budget()`: 0 always factors anew.
+  void set_row_update_budget(double share) { m_row_update_budget = share; }
+
+  /// Whether the current factor was made by `refactor_rows()`'s updates
+  /// rather than by a factorization.
+  bool rows_updated() const { return m_rows_updated; }
+
+  /// Factors `A` (both triangles stored), which differs from the last
+  /// factored matrix only in the rows and columns listed in `rows` (and is
+  /// of the same size).
+  ///
+  /// With the simplicial form, the factor is updated in place, row by row
+  /// (CHOLMOD's `cholmod_rowdel()` and `cholmod_rowadd()`, which set a row
+  /// and column of the factored matrix to those of the identity, then to
+  /// the new ones), when the entries of the factor those updates are
+  /// estimated to read, since the last `factor()`, stay within
+  /// `row_update_budget()` times the floating-point operations of that
+  /// factorization. A new set of prescribed vertices that differs from the
+  /// last one in a few vertices then costs a small fraction of a
+  /// factorization. Otherwise, and whenever an update fails, this is
+  /// `factor(A)`. The factor keeps its fill-reducing ordering: the rows
+  /// updated should be rows that the ordering was made for (the Dirichlet
+  /// systems of the package order the whole matrix, see
+  /// `fill_reducing_ordering()`).
+  bool refactor_rows(const Matrix& A, const std::vector<int>& rows)
+  {
+    cholmod_factor* L = m_factored && !m_empty ? m_solver.factor() : nullptr;
+    if(Form != CHOLMOD_SIMPLICIAL_FACTOR || L == nullptr || L->is_super ||
+       L->itype != CHOLMOD_INT || L->xtype != CHOLMOD_REAL || L->dtype != CHOLMOD_DOUBLE ||
+       A.rows() != static_cast<Eigen::Index>(L->n) || A.cols() != A.rows())
+      return factor(A);
+    if(rows.empty())
+      return true;
+    const int n = static_cast<int>(L->n);
+    for(int k : rows)
+      if(k < 0 || k >= n)
+        return factor(A);
+    std::vector<int> position(static_cast<std::size_t>(n));
+    const int* permutation = static_cast<const int*>(L->Perm);
+    for(int k = 0; k < n; ++k)
+      position[static_cast<std::size_t>(permutation != nullptr ? permutation[k] : k)] = k;
+    const double estimate = row_update_entries(*L, A, rows, position);
+    if(m_update_entries + estimate > m_row_update_budget * m_factorization_flops)
+      return factor(A);
+    m_update_entries += estimate;
+    release_work_arrays();
+    const Spectral_deformation::internal::Memory::Cholmod_huge_page_allocator huge_pages(
+        m_process_wide_tuning);
+    if(!update_rows(A, rows, position))
+      return factor(A);
+    m_given_ordering.clear(); // meant for a factor() that did not happen
+    m_rows_updated = true;
+    analyze_solves();
+    m_factor_nonzeros = static_cast<double>(static_cast<const int*>(m_solver.factor()->p)[n]);
+    return true;
   }
 
   /// Solves `A X = B` for the last factored `A`. Returns `false` when nothing
@@ -391,6 +444,124 @@ private:
         return false;
       seen[static_cast<std::size_t>(i)] = 1;
     }
+    return true;
+  }
+
+  // The split of the solves by subtrees and the factor's position of every
+  // row, for the last factor when it is a simplicial LLᵀ one.
+  void analyze_solves()
+  {
+    m_subtree_solve = Spectral_deformation::internal::Linear_algebra::Two_subtree_triangular_solve();
+    const cholmod_factor* L = m_factored ? m_solver.factor() : nullptr;
+    if(Form == CHOLMOD_SIMPLICIAL_FACTOR && L != nullptr && !L->is_super && L->is_ll &&
+       L->itype == CHOLMOD_INT && L->xtype == CHOLMOD_REAL && L->dtype == CHOLMOD_DOUBLE)
+    {
+      m_subtree_solve.analyze(static_cast<int>(L->n), static_cast<const int*>(L->p),
+                              static_cast<const int*>(L->i));
+      const int* permutation = static_cast<const int*>(L->Perm);
+      m_factor_position.resize(L->n);
+      for(int k = 0; k < static_cast<int>(L->n); ++k)
+        m_factor_position[permutation != nullptr ? permutation[k] : k] = k;
+    }
+  }
+
+  // An estimate of the entries of L that refactor_rows() reads: for every
+  // row, the columns on the paths of the elimination tree from its column,
+  // and from the columns of its neighbours in A, to the root (the solve for
+  // the new row and the two rank-one updates follow them).
+  static double row_update_entries(const cholmod_factor& L, const Matrix& A,
+                                   const std::vector<int>& rows, const std::vector<int>& position)
+  {
+    const int* starts = static_cast<const int*>(L.p);
+    const int* indices = static_cast<const int*>(L.i);
+    const int* counts = static_cast<const int*>(L.nz);
+    const int n = static_cast<int>(L.n);
+    std::vector<int> mark(static_cast<std::size_t>(n), -1);
+    double entries = 0;
+    int stamp = 0;
+    for(int k : rows)
+    {
+      auto walk = [&](int j) {
+        while(j >= 0 && mark[static_cast<std::size_t>(j)] != stamp)
+        {
+          mark[static_cast<std::size_t>(j)] = stamp;
+          const int count = counts != nullptr ? counts[j] : starts[j + 1] - starts[j];
+          entries += count;
+          j = count > 1 ? indices[starts[j] + 1] : -1;
+        }
+      };
+      walk(position[static_cast<std::size_t>(k)]);
+      for(Matrix::InnerIterator it(A, k); it; ++it)
+        walk(position[static_cast<std::size_t>(it.row())]);
+      ++stamp;
+    }
+    return 2 * entries;
+  }
+
+  // The updates of refactor_rows(): every listed row of the factored matrix
+  // set to the identity's, then, one after the other, to those of A, each
+  // coupled only to the rows already in their final state (the others get
+  // their coupling when their turn comes); then the factor back to the
+  // packed LLᵀ form the solves read.
+  bool update_rows(const Matrix& A, const std::vector<int>& rows, const std::vector<int>& position)
+  {
+    cholmod_common& common = m_solver.cholmod();
+    cholmod_factor* L = m_solver.factor();
+    common.status = CHOLMOD_OK;
+    for(int k : rows)
+      if(!cholmod_rowdel(static_cast<std::size_t>(position[static_cast<std::size_t>(k)]), nullptr, L,
+                         &common))
+        return false;
+    std::vector<char> pending(static_cast<std::size_t>(A.rows()), 0);
+    for(int k : rows)
+      pending[static_cast<std::size_t>(k)] = 1;
+    std::vector<int> column_rows;
+    std::vector<double> column_values;
+    for(int k : rows)
+    {
+      pending[static_cast<std::size_t>(k)] = 0;
+      column_rows.clear();
+      column_values.clear();
+      bool identity = true;
+      for(Matrix::InnerIterator it(A, k); it; ++it)
+      {
+        const int i = static_cast<int>(it.row());
+        if(i != k && it.value() != 0)
+          identity = false;
+        else if(i == k && it.value() != 1)
+          identity = false;
+        if(pending[static_cast<std::size_t>(i)] || it.value() == 0)
+          continue;
+        column_rows.push_back(position[static_cast<std::size_t>(i)]);
+        column_values.push_back(it.value());
+      }
+      if(identity)
+        continue; // rowdel left it so
+      int column_starts[2] = {0, static_cast<int>(column_rows.size())};
+      cholmod_sparse column;
+      column.nrow = L->n;
+      column.ncol = 1;
+      column.nzmax = column_rows.size();
+      column.p = column_starts;
+      column.i = column_rows.data();
+      column.nz = nullptr;
+      column.x = column_values.data();
+      column.z = nullptr;
+      column.stype = 0;
+      column.itype = CHOLMOD_INT;
+      column.xtype = CHOLMOD_REAL;
+      column.dtype = CHOLMOD_DOUBLE;
+      column.sorted = 0;
+      column.packed = 1;
+      if(!cholmod_rowadd(static_cast<std::size_t>(position[static_cast<std::size_t>(k)]), &column, L,
+                         &common))
+        return false;
+    }
+    // LDLᵀ to LLᵀ needs a positive D: a matrix that is not positive
+    // definite stops there.
+    if(!cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, L, &common) || common.status != CHOLMOD_OK ||
+       L->minor < L->n || !L->is_ll)
+      return false;
     return true;
   }
 
@@ -587,6 +758,12 @@ private:
   // The ordering of the next factor(), when one was given.
   std::vector<int> m_given_ordering;
   double m_factor_nonzeros = 0;
+  // The flops of the last factor() and the entries estimated for the row
+  // updates since (refactor_rows()).
+  double m_factorization_flops = 0;
+  double m_update_entries = 0;
+  double m_row_update_budget = 0.1;
+  bool m_rows_updated = false;
   bool m_factored = false;
   bool m_empty = false;
   bool m_process_wide_tuning = false;

@@ -39,54 +39,91 @@ struct Takes_fill_reducing_ordering<
 {
 };
 
+/// Whether a sparse solver can factor a matrix that differs from its last
+/// one in a few rows and columns by updating its factor
+/// (`Cholmod_llt_solver_traits::refactor_rows()`).
+template <class Solver, class = void>
+struct Refactors_rows : std::false_type
+{
+};
+template <class Solver>
+struct Refactors_rows<Solver, std::void_t<decltype(bool(std::declval<Solver&>().refactor_rows(
+                                  std::declval<const Eigen::SparseMatrix<double>&>(),
+                                  std::declval<const std::vector<int>&>())))>> : std::true_type
+{
+};
+
 /// A symmetric positive semi-definite system A X = B in which some unknowns
-/// are prescribed: A is restricted to the free unknowns and factored once,
-/// the prescribed values enter the right-hand side.
+/// are prescribed. The matrix factored is A with the rows and columns of the
+/// prescribed unknowns replaced by those of the identity, whose right-hand
+/// side is the prescribed values; their coupling to the free unknowns moves
+/// to the right-hand side.
 ///
-/// When the solver takes a fill-reducing ordering, every factorization of
-/// the same matrix (until `forget_matrix()`) uses one ordering of the whole
-/// matrix (`fill_reducing_ordering()`), restricted to the free unknowns,
-/// instead of choosing a new one for each free block: on a large mesh,
-/// choosing the ordering costs several times the numeric factorization, and
-/// the solver's choice for the whole matrix weighs nested dissection, which
-/// its default choice for a block skips on these systems.
+/// Keeping every unknown in the factored matrix lets a new set of prescribed
+/// unknowns that differs from the last one in a few of them update the
+/// factor (when the solver can, see `Refactors_rows`) instead of factoring
+/// anew. When the solver takes a fill-reducing ordering, every factorization
+/// of the same matrix (until `forget_matrix()`) uses one ordering of the
+/// whole matrix (`fill_reducing_ordering()`) instead of choosing a new one
+/// for each set: on a large mesh, choosing the ordering costs several times
+/// the numeric factorization, and the solver's choice for the whole matrix
+/// weighs nested dissection, which its default choice for a block skips on
+/// these systems.
 template <class SparseSPDSolverTraits>
 class Dirichlet_system
 {
 public:
-  /// Factors the free block of `A`; `prescribed[i]` flags unknown i. Later
-  /// calls must pass the same `A` until `forget_matrix()`.
+  /// Factors for the unknowns flagged in `prescribed`. Later calls must
+  /// pass the same `A` until `forget_matrix()`.
   bool factor(const Eigen::SparseMatrix<double>& A, const std::vector<char>& prescribed)
   {
     const Eigen::Index n = A.rows();
-    m_free.clear();
-    m_free_index.assign(static_cast<std::size_t>(n), -1);
+    std::vector<int> changed;
+    const bool same_size = m_factored && m_prescribed.size() == prescribed.size();
+    if(same_size)
+      for(std::size_t i = 0; i < prescribed.size(); ++i)
+        if((prescribed[i] != 0) != (m_prescribed[i] != 0))
+          changed.push_back(static_cast<int>(i));
+    m_factored = false;
+    m_prescribed.assign(prescribed.begin(), prescribed.end());
+    m_prescribed_list.clear();
     for(Eigen::Index i = 0; i < n; ++i)
-      if(!prescribed[static_cast<std::size_t>(i)])
+      if(prescribed[static_cast<std::size_t>(i)])
+        m_prescribed_list.push_back(static_cast<int>(i));
+    // Both matrices column by column: a column of A goes to the system when
+    // its unknown is free, to the coupling when it is prescribed.
+    Eigen::SparseMatrix<double> system(n, n);
+    m_coupling.resize(n, n);
+    m_coupling.setZero();
+    {
+      Eigen::VectorXi system_entries(n), coupling_entries(n);
+      for(Eigen::Index j = 0; j < n; ++j)
       {
-        m_free_index[static_cast<std::size_t>(i)] = static_cast<int>(m_free.size());
-        m_free.push_back(static_cast<int>(i));
+        const bool fixed = prescribed[static_cast<std::size_t>(j)] != 0;
+        system_entries[j] = fixed ? 1 : static_cast<int>(A.col(j).nonZeros());
+        coupling_entries[j] = fixed ? static_cast<int>(A.col(j).nonZeros()) : 0;
       }
-    std::vector<Eigen::Triplet<double>> inner, outer;
-    for(int k = 0; k < A.outerSize(); ++k)
-      for(Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it)
+      system.reserve(system_entries);
+      m_coupling.reserve(coupling_entries);
+    }
+    for(Eigen::Index j = 0; j < n; ++j)
+    {
+      if(prescribed[static_cast<std::size_t>(j)])
       {
-        const int r = m_free_index[static_cast<std::size_t>(it.row())];
-        if(r < 0)
-          continue;
-        const int c = m_free_index[static_cast<std::size_t>(it.col())];
-        if(c >= 0)
-          inner.emplace_back(r, c, it.value());
-        else
-          outer.emplace_back(r, static_cast<int>(it.col()), it.value());
+        system.insert(j, j) = 1.0;
+        for(Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+          if(!prescribed[static_cast<std::size_t>(it.row())])
+            m_coupling.insert(it.row(), j) = it.value();
       }
-    const Eigen::Index m = static_cast<Eigen::Index>(m_free.size());
-    Eigen::SparseMatrix<double> free_block(m, m);
-    free_block.setFromTriplets(inner.begin(), inner.end());
-    m_coupling.resize(m, n);
-    m_coupling.setFromTriplets(outer.begin(), outer.end());
-    if(m == 0)
-      return true;
+      else
+        for(Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+          if(!prescribed[static_cast<std::size_t>(it.row())])
+            system.insert(it.row(), j) = it.value();
+    }
+    system.makeCompressed();
+    m_coupling.makeCompressed();
+    if(n == 0)
+      return m_factored = true;
     if constexpr(Takes_fill_reducing_ordering<SparseSPDSolverTraits>::value)
     {
       if(!m_ordered)
@@ -95,16 +132,14 @@ public:
         m_ordered = true;
       }
       if(static_cast<Eigen::Index>(m_whole_ordering.size()) == n)
-      {
-        std::vector<int> restricted;
-        restricted.reserve(static_cast<std::size_t>(m));
-        for(int i : m_whole_ordering)
-          if(m_free_index[static_cast<std::size_t>(i)] >= 0)
-            restricted.push_back(m_free_index[static_cast<std::size_t>(i)]);
-        m_solver.set_fill_reducing_ordering(std::move(restricted));
-      }
+        m_solver.set_fill_reducing_ordering(m_whole_ordering);
     }
-    return m_solver.factor(free_block);
+    if constexpr(Refactors_rows<SparseSPDSolverTraits>::value)
+    {
+      if(same_size)
+        return m_factored = m_solver.refactor_rows(system, changed);
+    }
+    return m_factored = m_solver.factor(system);
   }
 
   /// The next `factor()` may pass another matrix.
@@ -112,6 +147,8 @@ public:
   {
     m_whole_ordering.clear();
     m_ordered = false;
+    m_factored = false;
+    m_prescribed.clear();
   }
 
   /// Solves with the right-hand side `rhs` (n×d) and the values of the
@@ -121,27 +158,37 @@ public:
   template <class Values, class Out>
   bool solve(const Eigen::MatrixXd& rhs, const Values& prescribed_values, Out& out) const
   {
-    const Eigen::Index m = static_cast<Eigen::Index>(m_free.size());
-    // The buffers are kept between calls: on large meshes, fresh pages for
-    // them cost more than the arithmetic.
-    Eigen::MatrixXd& b = m_free_rhs;
-    Eigen::MatrixXd& x = m_free_solution;
-    if(m > 0)
-    {
-      // The coupling block has prescribed columns only: free rows are not read.
-      m_coupled.noalias() = m_coupling * prescribed_values;
-      b.resize(m, rhs.cols());
-      for(Eigen::Index r = 0; r < m; ++r)
-        b.row(r) = rhs.row(m_free[static_cast<std::size_t>(r)]) - m_coupled.row(r);
-    }
-    if(static_cast<const void*>(&out) != static_cast<const void*>(&prescribed_values))
-      out = prescribed_values;
-    if(m == 0)
-      return true;
-    if(!m_solver.solve(b, x))
+    if(!m_factored || rhs.rows() != static_cast<Eigen::Index>(m_prescribed.size()))
       return false;
-    for(Eigen::Index r = 0; r < m; ++r)
-      out.row(m_free[static_cast<std::size_t>(r)]) = x.row(r);
+    // The buffer is kept between calls: on large meshes, fresh pages for it
+    // cost more than the arithmetic.
+    Eigen::MatrixXd& b = m_right_hand_side;
+    b = rhs;
+    // The coupling has prescribed columns only: free rows of the values are not read.
+    b.noalias() -= m_coupling * prescribed_values;
+    for(int i : m_prescribed_list)
+      b.row(i) = prescribed_values.row(i);
+    if(rhs.rows() == 0)
+    {
+      out = b;
+      return true;
+    }
+    if constexpr(std::is_same<Out, Eigen::MatrixXd>::value)
+    {
+      if(!m_solver.solve(b, out))
+        return false;
+    }
+    else
+    {
+      if(!m_solver.solve(b, m_solution))
+        return false;
+      out = m_solution;
+    }
+    // The identity's rows return their values up to the factor's rounding:
+    // the prescribed unknowns get theirs bit for bit.
+    if(static_cast<const void*>(&out) != static_cast<const void*>(&prescribed_values))
+      for(int i : m_prescribed_list)
+        out.row(i) = prescribed_values.row(i);
     return true;
   }
 
@@ -149,16 +196,20 @@ public:
   /// (`SparseSPDSolverTraits::set_process_wide_tuning()`, when it has it).
   void set_process_wide_tuning(bool enabled) { set_process_wide_tuning_if_supported(m_solver, enabled); }
 
+  /// The solver, for its settings.
+  SparseSPDSolverTraits& solver() { return m_solver; }
+
 private:
   SparseSPDSolverTraits m_solver;
   // One ordering of the whole matrix (empty when the solver found none), and
   // whether it was sought.
   std::vector<int> m_whole_ordering;
   bool m_ordered = false;
-  std::vector<int> m_free;
-  std::vector<int> m_free_index;
-  Eigen::SparseMatrix<double> m_coupling;
-  mutable Eigen::MatrixXd m_coupled, m_free_rhs, m_free_solution;
+  bool m_factored = false;
+  std::vector<char> m_prescribed;     // the flags of the last factor()
+  std::vector<int> m_prescribed_list; // their indices
+  Eigen::SparseMatrix<double> m_coupling; // free rows, prescribed columns
+  mutable Eigen::MatrixXd m_right_hand_side, m_solution;
 };
 
 } // namespace Linear_algebra

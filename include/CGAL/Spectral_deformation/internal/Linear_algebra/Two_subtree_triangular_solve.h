@@ -25,8 +25,10 @@ namespace internal {
 namespace Linear_algebra {
 
 // Solves L Lᵀ y = b with a simplicial Cholesky factor L (compressed columns,
-// rows sorted, diagonal first, columns in a postorder of the elimination
-// tree, as CHOLMOD leaves them) on two threads, each on its own subtrees.
+// rows sorted, diagonal first) on two threads, each on its own subtrees of
+// the elimination tree. The columns need not be in a postorder of the tree:
+// a factor modified row by row (`Cholmod_llt_solver_traits::refactor_rows()`)
+// keeps the numbering of its first analysis.
 //
 // The columns of a subtree only update rows of the subtree and of its
 // ancestors. The tree is cut below a few top columns (the ancestors of
@@ -45,9 +47,9 @@ class Two_subtree_triangular_solve
 public:
   // Analyzes the pattern of L (n columns, `starts` of n + 1 column starts,
   // `rows` the row indices). `usable()` tells whether the split was found:
-  // a pattern that is not sorted and postordered, or a tree whose top
-  // columns would hold more than a quarter of the entries, is left to the
-  // caller's sequential solve.
+  // a pattern that is not sorted, or a tree whose top columns would hold
+  // more than a quarter of the entries, is left to the caller's sequential
+  // solve.
   void analyze(int n, const int* starts, const int* rows)
   {
     *this = Two_subtree_triangular_solve();
@@ -55,19 +57,22 @@ public:
     if(n < 2 || !read_tree(n, starts, rows, tree))
       return;
     const std::vector<int>& parent = tree.parent;
-    const std::vector<int>& first_descendant = tree.first_descendant;
     const std::vector<double>& entries = tree.entries;
     const std::vector<double>& subtree_entries = tree.subtree_entries;
     std::vector<std::vector<int>> children(n);
-    std::vector<int> candidates;
+    // Columns alone in their tree (the rows of the identity of a Dirichlet
+    // system) are dealt last, one by one, to balance the two threads.
+    std::vector<int> candidates, isolated;
     double total = 0;
     for(int j = 0; j < n; ++j)
     {
       total += entries[j];
       if(parent[j] >= 0)
         children[parent[j]].push_back(j);
-      else
+      else if(subtree_entries[j] > 1)
         candidates.push_back(j);
+      else
+        isolated.push_back(j);
     }
     // Deal the candidate subtrees, largest first, to the lighter thread;
     // while that leaves them unbalanced, replace the largest by its
@@ -99,15 +104,30 @@ public:
       if(candidates.empty())
         return;
     }
-    for(std::size_t c = 0; c < candidates.size(); ++c)
-      m_ranges[assignment[c]].emplace_back(first_descendant[candidates[c]], candidates[c]);
-    for(std::vector<std::pair<int, int>>& ranges : m_ranges)
-      std::sort(ranges.begin(), ranges.end());
     std::sort(top.begin(), top.end());
     m_top = std::move(top);
     m_top_slot.assign(n, -1);
     for(std::size_t t = 0; t < m_top.size(); ++t)
       m_top_slot[m_top[t]] = static_cast<int>(t);
+    // Every other column lies below one candidate and belongs to its thread;
+    // a parent comes after its children, so one pass from the last column
+    // down finds the owners, and the columns of each thread, increasing, are
+    // an order in which children come before their parents.
+    std::vector<signed char> owner(n, -1);
+    for(std::size_t c = 0; c < candidates.size(); ++c)
+      owner[candidates[c]] = static_cast<signed char>(assignment[c]);
+    for(const int j : isolated)
+    {
+      const int lighter = load[0] <= load[1] ? 0 : 1;
+      owner[j] = static_cast<signed char>(lighter);
+      load[lighter] += 1;
+    }
+    for(int j = n - 1; j >= 0; --j)
+      if(owner[j] < 0 && m_top_slot[j] < 0 && parent[j] >= 0)
+        owner[j] = owner[parent[j]];
+    for(int j = 0; j < n; ++j)
+      if(owner[j] >= 0)
+        m_columns[owner[j]].push_back(j);
     m_usable = true;
   }
 
@@ -128,21 +148,21 @@ public:
     {
       std::vector<double>& updates = top_updates[thread];
       updates.assign(top_size * W, 0.0);
-      for(const std::pair<int, int>& range : m_ranges[thread])
-        for(int j = range.first; j <= range.second; ++j)
+      for(const int j : m_columns[thread])
+      {
+        double solved[W]; // a copy, so that the updates below cannot alias it
+        divide_by_diagonal<W>(j, starts, values, y, solved);
+        for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
         {
-          double solved[W]; // a copy, so that the updates below cannot alias it
-          divide_by_diagonal<W>(j, starts, values, y, solved);
-          for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
-          {
-            const int i = rows[k];
-            double* target = i <= range.second ? y + std::size_t(W) * i
-                                               : updates.data() + std::size_t(W) * m_top_slot[i];
-            const double l = values[k];
-            for(int c = 0; c < W; ++c)
-              target[c] -= l * solved[c];
-          }
+          // Row i is an ancestor of j: in the same subtree, or a top column.
+          const int i = rows[k];
+          const int slot = m_top_slot[i];
+          double* target = slot < 0 ? y + std::size_t(W) * i : updates.data() + std::size_t(W) * slot;
+          const double l = values[k];
+          for(int c = 0; c < W; ++c)
+            target[c] -= l * solved[c];
         }
+      }
     }
     for(std::size_t t = 0; t < top_size; ++t)
     {
@@ -185,9 +205,8 @@ public:
 #pragma omp parallel for num_threads(2) schedule(static, 1)
 #endif
     for(int thread = 0; thread < 2; ++thread)
-      for(auto range = m_ranges[thread].rbegin(); range != m_ranges[thread].rend(); ++range)
-        for(int j = range->second; j >= range->first; --j)
-          backward(j);
+      for(auto j = m_columns[thread].rbegin(); j != m_columns[thread].rend(); ++j)
+        backward(*j);
   }
 
   // X = A^{-1} B for A = P L Lᵀ Pᵀ, row k of A being row position[k] of
@@ -240,48 +259,37 @@ public:
 
 private:
   // The elimination tree of L: the parent of each column (-1 for a root),
-  // the first column of its subtree, its entries and those of its subtree.
+  // its entries and those of its subtree.
   struct Elimination_tree
   {
-    std::vector<int> parent, first_descendant;
+    std::vector<int> parent;
     std::vector<double> entries, subtree_entries;
   };
 
   // Reads the tree off the pattern of L. Returns false when the pattern is
-  // not sorted with the diagonal first, or the columns not in a postorder.
+  // not sorted with the diagonal first.
   static bool read_tree(int n, const int* starts, const int* rows, Elimination_tree& tree)
   {
     std::vector<int>& parent = tree.parent;
-    std::vector<int>& first_descendant = tree.first_descendant;
     std::vector<double>& subtree_entries = tree.subtree_entries;
     parent.assign(n, -1);
-    first_descendant.resize(n);
     tree.entries.resize(n);
     subtree_entries.resize(n);
-    std::vector<int> size(n, 1);
     for(int j = 0; j < n; ++j)
     {
       if(starts[j + 1] <= starts[j] || rows[starts[j]] != j)
         return false;
       for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
-        if(rows[k] <= rows[k - 1])
+        if(rows[k] <= rows[k - 1] || rows[k] >= n)
           return false;
       if(starts[j + 1] - starts[j] > 1)
         parent[j] = rows[starts[j] + 1];
       tree.entries[j] = subtree_entries[j] = double(starts[j + 1] - starts[j]);
-      first_descendant[j] = j;
     }
+    // A parent comes after its children (a lower triangular factor).
     for(int j = 0; j < n; ++j)
       if(parent[j] >= 0)
-      {
         subtree_entries[parent[j]] += subtree_entries[j];
-        size[parent[j]] += size[j];
-        first_descendant[parent[j]] = (std::min)(first_descendant[parent[j]], first_descendant[j]);
-      }
-    // In a postorder, the subtree of j is the range [first descendant, j].
-    for(int j = 0; j < n; ++j)
-      if(size[j] != j - first_descendant[j] + 1)
-        return false;
     return true;
   }
 
@@ -296,7 +304,7 @@ private:
       solved[c] = y_j[c] = y_j[c] * inverse_diagonal;
   }
 
-  std::vector<std::pair<int, int>> m_ranges[2]; // column ranges of each thread's subtrees
+  std::vector<int> m_columns[2];                // the columns of each thread's subtrees, increasing
   std::vector<int> m_top;                       // the other columns, increasing
   std::vector<int> m_top_slot;                  // column -> index in m_top, or -1
   bool m_usable = false;
