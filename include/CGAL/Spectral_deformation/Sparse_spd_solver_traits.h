@@ -329,8 +329,13 @@ public:
     return m_factored;
   }
 
-  /// The share of a factorization's cost that the row updates of
-  /// `refactor_rows()` may take before it factors anew instead (see there).
+  /// The share of a factorization's cost that the row updates of one call
+  /// of `refactor_rows()` may take before it factors anew instead (see
+  /// there), counted as entries of the factor read against the
+  /// factorization's floating-point operations. Default 0.1: an update reads
+  /// an entry several times slower than a supernodal factorization makes a
+  /// floating-point operation, so that updates within the default cost
+  /// well under a factorization.
   double row_update_budget() const { return m_row_update_budget; }
 
   /// Sets `row_update_budget()`: 0 always factors anew.
@@ -348,12 +353,12 @@ public:
   /// (CHOLMOD's `cholmod_rowdel()` and `cholmod_rowadd()`, which set a row
   /// and column of the factored matrix to those of the identity, then to
   /// the new ones), when the entries of the factor those updates are
-  /// estimated to read, since the last `factor()`, stay within
-  /// `row_update_budget()` times the floating-point operations of that
-  /// factorization. A new set of prescribed vertices that differs from the
-  /// last one in a few vertices then costs a small fraction of a
-  /// factorization. Otherwise, and whenever an update fails, this is
-  /// `factor(A)`. The factor keeps its fill-reducing ordering: the rows
+  /// estimated to read stay within `row_update_budget()` times the
+  /// floating-point operations of the last `factor()`, and those of all the
+  /// updates since that factorization within ten times as many. A new set
+  /// of prescribed vertices that differs from the last one in a few
+  /// vertices then costs a small fraction of a factorization. Otherwise, and
+  /// whenever an update fails, this is `factor(A)`. The factor keeps its fill-reducing ordering: the rows
   /// updated should be rows that the ordering was made for (the Dirichlet
   /// systems of the package order the whole matrix, see
   /// `fill_reducing_ordering()`).
@@ -374,8 +379,12 @@ public:
     const int* permutation = static_cast<const int*>(L->Perm);
     for(int k = 0; k < n; ++k)
       position[static_cast<std::size_t>(permutation != nullptr ? permutation[k] : k)] = k;
+    // The factor is made anew when this set's updates would cost too much,
+    // and after updates worth several budgets, so that the rounding errors
+    // of the updates do not pile up without end.
     const double estimate = row_update_entries(*L, A, rows, position);
-    if(m_update_entries + estimate > m_row_update_budget * m_factorization_flops)
+    if(estimate > m_row_update_budget * m_factorization_flops ||
+       m_update_entries + estimate > 10 * m_row_update_budget * m_factorization_flops)
       return factor(A);
     m_update_entries += estimate;
     release_work_arrays();
@@ -386,7 +395,10 @@ public:
     m_given_ordering.clear(); // meant for a factor() that did not happen
     m_rows_updated = true;
     analyze_solves();
-    m_factor_nonzeros = static_cast<double>(static_cast<const int*>(m_solver.factor()->p)[n]);
+    m_factor_nonzeros = 0;
+    const int* counts = static_cast<const int*>(m_solver.factor()->nz);
+    for(int j = 0; j < n; ++j)
+      m_factor_nonzeros += counts[j];
     return true;
   }
 
@@ -457,6 +469,7 @@ private:
        L->itype == CHOLMOD_INT && L->xtype == CHOLMOD_REAL && L->dtype == CHOLMOD_DOUBLE)
     {
       m_subtree_solve.analyze(static_cast<int>(L->n), static_cast<const int*>(L->p),
+                              static_cast<const int*>(L->nz),
                               static_cast<const int*>(L->i));
       const int* permutation = static_cast<const int*>(L->Perm);
       m_factor_position.resize(L->n);
@@ -501,8 +514,10 @@ private:
   // The updates of refactor_rows(): every listed row of the factored matrix
   // set to the identity's, then, one after the other, to those of A, each
   // coupled only to the rows already in their final state (the others get
-  // their coupling when their turn comes); then the factor back to the
-  // packed LLᵀ form the solves read.
+  // their coupling when their turn comes); then the factor back to the LLᵀ
+  // form the solves read. It stays unpacked (columns moved to the end of
+  // its arrays when they grew), since packing it would copy the whole
+  // factor.
   bool update_rows(const Matrix& A, const std::vector<int>& rows, const std::vector<int>& position)
   {
     cholmod_common& common = m_solver.cholmod();
@@ -559,7 +574,7 @@ private:
     }
     // LDLᵀ to LLᵀ needs a positive D: a matrix that is not positive
     // definite stops there.
-    if(!cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, L, &common) || common.status != CHOLMOD_OK ||
+    if(!cholmod_change_factor(CHOLMOD_REAL, 1, 0, 0, 0, L, &common) || common.status != CHOLMOD_OK ||
        L->minor < L->n || !L->is_ll)
       return false;
     return true;

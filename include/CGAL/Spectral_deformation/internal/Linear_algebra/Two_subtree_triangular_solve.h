@@ -45,17 +45,26 @@ namespace Linear_algebra {
 class Two_subtree_triangular_solve
 {
 public:
-  // Analyzes the pattern of L (n columns, `starts` of n + 1 column starts,
+  // Analyzes the pattern of L (n columns starting at `starts`, of
+  // `counts` entries each, or, when `counts` is null, packed: n + 1 starts;
   // `rows` the row indices). `usable()` tells whether the split was found:
   // a pattern that is not sorted, or a tree whose top columns would hold
   // more than a quarter of the entries, is left to the caller's sequential
   // solve.
-  void analyze(int n, const int* starts, const int* rows)
+  void analyze(int n, const int* starts, const int* counts, const int* rows)
   {
     *this = Two_subtree_triangular_solve();
-    Elimination_tree tree;
-    if(n < 2 || !read_tree(n, starts, rows, tree))
+    if(n < 2)
       return;
+    m_ends.resize(static_cast<std::size_t>(n));
+    for(int j = 0; j < n; ++j)
+      m_ends[static_cast<std::size_t>(j)] = counts != nullptr ? starts[j] + counts[j] : starts[j + 1];
+    Elimination_tree tree;
+    if(!read_tree(n, starts, m_ends.data(), rows, tree))
+    {
+      m_ends.clear();
+      return;
+    }
     const std::vector<int>& parent = tree.parent;
     const std::vector<double>& entries = tree.entries;
     const std::vector<double>& subtree_entries = tree.subtree_entries;
@@ -140,6 +149,7 @@ public:
   void solve(const int* starts, const int* rows, const double* values, double* y) const
   {
     const std::size_t top_size = m_top.size();
+    const int* const ends = m_ends.data();
     std::vector<double> top_updates[2];
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(2) schedule(static, 1)
@@ -152,7 +162,7 @@ public:
       {
         double solved[W]; // a copy, so that the updates below cannot alias it
         divide_by_diagonal<W>(j, starts, values, y, solved);
-        for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
+        for(int k = starts[j] + 1; k < ends[j]; ++k)
         {
           // Row i is an ancestor of j: in the same subtree, or a top column.
           const int i = rows[k];
@@ -174,7 +184,7 @@ public:
     {
       double solved[W];
       divide_by_diagonal<W>(j, starts, values, y, solved);
-      for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
+      for(int k = starts[j] + 1; k < ends[j]; ++k)
       {
         double* y_i = y + std::size_t(W) * rows[k];
         const double l = values[k];
@@ -188,7 +198,7 @@ public:
       double sum[W];
       for(int c = 0; c < W; ++c)
         sum[c] = y_j[c];
-      for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
+      for(int k = starts[j] + 1; k < ends[j]; ++k)
       {
         const double* y_i = y + std::size_t(W) * rows[k];
         const double l = values[k];
@@ -268,7 +278,7 @@ private:
 
   // Reads the tree off the pattern of L. Returns false when the pattern is
   // not sorted with the diagonal first.
-  static bool read_tree(int n, const int* starts, const int* rows, Elimination_tree& tree)
+  static bool read_tree(int n, const int* starts, const int* ends, const int* rows, Elimination_tree& tree)
   {
     std::vector<int>& parent = tree.parent;
     std::vector<double>& subtree_entries = tree.subtree_entries;
@@ -277,14 +287,14 @@ private:
     subtree_entries.resize(n);
     for(int j = 0; j < n; ++j)
     {
-      if(starts[j + 1] <= starts[j] || rows[starts[j]] != j)
+      if(ends[j] <= starts[j] || rows[starts[j]] != j)
         return false;
-      for(int k = starts[j] + 1; k < starts[j + 1]; ++k)
+      for(int k = starts[j] + 1; k < ends[j]; ++k)
         if(rows[k] <= rows[k - 1] || rows[k] >= n)
           return false;
-      if(starts[j + 1] - starts[j] > 1)
+      if(ends[j] - starts[j] > 1)
         parent[j] = rows[starts[j] + 1];
-      tree.entries[j] = subtree_entries[j] = double(starts[j + 1] - starts[j]);
+      tree.entries[j] = subtree_entries[j] = double(ends[j] - starts[j]);
     }
     // A parent comes after its children (a lower triangular factor).
     for(int j = 0; j < n; ++j)
@@ -304,6 +314,7 @@ private:
       solved[c] = y_j[c] = y_j[c] * inverse_diagonal;
   }
 
+  std::vector<int> m_ends;                      // one past the last entry of each column
   std::vector<int> m_columns[2];                // the columns of each thread's subtrees, increasing
   std::vector<int> m_top;                       // the other columns, increasing
   std::vector<int> m_top_slot;                  // column -> index in m_top, or -1
