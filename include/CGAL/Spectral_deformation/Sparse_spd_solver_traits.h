@@ -365,9 +365,10 @@ public:
   bool refactor_rows(const Matrix& A, const std::vector<int>& rows)
   {
     cholmod_factor* L = m_factored && !m_empty ? m_solver.factor() : nullptr;
-    if(Form != CHOLMOD_SIMPLICIAL_FACTOR || L == nullptr || L->is_super ||
-       L->itype != CHOLMOD_INT || L->xtype != CHOLMOD_REAL || L->dtype != CHOLMOD_DOUBLE ||
-       A.rows() != static_cast<Eigen::Index>(L->n) || A.cols() != A.rows())
+    // analyze_solves() found the factor's position of every row exactly
+    // when the factor has the simplicial LLᵀ form the updates start from.
+    if(Form != CHOLMOD_SIMPLICIAL_FACTOR || L == nullptr || A.cols() != A.rows() ||
+       m_factor_position.size() != L->n || A.rows() != static_cast<Eigen::Index>(L->n))
       return factor(A);
     if(rows.empty())
       return true;
@@ -375,10 +376,7 @@ public:
     for(int k : rows)
       if(k < 0 || k >= n)
         return factor(A);
-    std::vector<int> position(static_cast<std::size_t>(n));
-    const int* permutation = static_cast<const int*>(L->Perm);
-    for(int k = 0; k < n; ++k)
-      position[static_cast<std::size_t>(permutation != nullptr ? permutation[k] : k)] = k;
+    const std::vector<int>& position = m_factor_position;
     // The factor is made anew when this set's updates would cost too much,
     // and after updates worth several budgets, so that the rounding errors
     // of the updates do not pile up without end.
@@ -464,6 +462,7 @@ private:
   void analyze_solves()
   {
     m_subtree_solve = Spectral_deformation::internal::Linear_algebra::Two_subtree_triangular_solve();
+    m_factor_position.clear();
     const cholmod_factor* L = m_factored ? m_solver.factor() : nullptr;
     if(Form == CHOLMOD_SIMPLICIAL_FACTOR && L != nullptr && !L->is_super && L->is_ll &&
        L->itype == CHOLMOD_INT && L->xtype == CHOLMOD_REAL && L->dtype == CHOLMOD_DOUBLE)
@@ -487,7 +486,7 @@ private:
   {
     const int* starts = static_cast<const int*>(L.p);
     const int* indices = static_cast<const int*>(L.i);
-    const int* counts = static_cast<const int*>(L.nz);
+    const int* counts = static_cast<const int*>(L.nz); // a simplicial factor has them
     const int n = static_cast<int>(L.n);
     std::vector<int> mark(static_cast<std::size_t>(n), -1);
     double entries = 0;
@@ -498,7 +497,7 @@ private:
         while(j >= 0 && mark[static_cast<std::size_t>(j)] != stamp)
         {
           mark[static_cast<std::size_t>(j)] = stamp;
-          const int count = counts != nullptr ? counts[j] : starts[j + 1] - starts[j];
+          const int count = counts[j];
           entries += count;
           j = count > 1 ? indices[starts[j] + 1] : -1;
         }
