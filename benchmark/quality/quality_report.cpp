@@ -149,7 +149,9 @@ void print_usage(const char* program)
       << "  --arap-large-iterations N     cap of the additional CGAL runs on large ROIs\n"
       << "                                (default 200)\n"
       << "  --mesh-output DIR             write the input, the selection (.vtk, scalar\n"
-      << "                                'status') and every result (.off) there\n"
+      << "                                'status') and every result (.off) there, with the\n"
+      << "                                smooth meshes of the spectral ones (.smooth_rest.off,\n"
+      << "                                .smooth_deformed.off)\n"
       << "  --selection-only              with --mesh-output: write the inputs and selections,\n"
       << "                                print their sizes and run nothing (to check the\n"
       << "                                shapes of a case file)\n"
@@ -304,6 +306,8 @@ struct Run_result
   double deform_seconds = not_a_number;
   std::string iterations;
   Positions after;
+  // The smooth mesh at rest and deformed (spectral algorithms; empty otherwise).
+  Positions smooth_rest, smooth_deformed;
   Quality quality;
 };
 
@@ -434,6 +438,20 @@ void record_deformation(const Deformation& deformation, bool linear, double seco
   result.message = report.message;
   result.iterations = spectral_iterations(report, linear);
   result.after = positions_of(mesh);
+  if constexpr(Deformation::has_basis)
+  {
+    result.smooth_rest.resize(result.after.rows(), 3);
+    result.smooth_deformed.resize(result.after.rows(), 3);
+    Eigen::Index i = 0;
+    for(auto v : vertices(mesh))
+    {
+      const auto rest = deformation.smoothed_rest_point(v);
+      const auto deformed = deformation.smoothed_deformed_point(v);
+      result.smooth_rest.row(i) << rest.x(), rest.y(), rest.z();
+      result.smooth_deformed.row(i) << deformed.x(), deformed.y(), deformed.z();
+      ++i;
+    }
+  }
 }
 
 /// Runs `deform()` with the defaults of the class and, when it stops at its
@@ -943,9 +961,20 @@ void run_case(const Deformation_case& c, const Options& options, unsigned int le
   if(!options.mesh_output_directory.empty())
     for(const Run_result& r : results)
       if(r.success)
+      {
         write_off(base + "." + r.key + ".off", c.mesh, r.after);
+        if(r.smooth_rest.rows() > 0)
+        {
+          write_off(base + "." + r.key + ".smooth_rest.off", c.mesh, r.smooth_rest);
+          write_off(base + "." + r.key + ".smooth_deformed.off", c.mesh, r.smooth_deformed);
+        }
+      }
   for(Run_result& r : results)
+  {
     r.after.resize(0, 3);
+    r.smooth_rest.resize(0, 3);
+    r.smooth_deformed.resize(0, 3);
+  }
   report.seconds = seconds_since(start);
 }
 
