@@ -90,38 +90,8 @@ public:
     for(Eigen::Index i = 0; i < n; ++i)
       if(prescribed[static_cast<std::size_t>(i)])
         m_prescribed_list.push_back(static_cast<int>(i));
-    // Both matrices column by column: a column of A goes to the system when
-    // its unknown is free, to the coupling when it is prescribed.
-    Eigen::SparseMatrix<double> system(n, n);
-    m_coupling.resize(n, n);
-    m_coupling.setZero();
-    {
-      Eigen::VectorXi system_entries(n), coupling_entries(n);
-      for(Eigen::Index j = 0; j < n; ++j)
-      {
-        const bool fixed = prescribed[static_cast<std::size_t>(j)] != 0;
-        system_entries[j] = fixed ? 1 : static_cast<int>(A.col(j).nonZeros());
-        coupling_entries[j] = fixed ? static_cast<int>(A.col(j).nonZeros()) : 0;
-      }
-      system.reserve(system_entries);
-      m_coupling.reserve(coupling_entries);
-    }
-    for(Eigen::Index j = 0; j < n; ++j)
-    {
-      if(prescribed[static_cast<std::size_t>(j)])
-      {
-        system.insert(j, j) = 1.0;
-        for(Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
-          if(!prescribed[static_cast<std::size_t>(it.row())])
-            m_coupling.insert(it.row(), j) = it.value();
-      }
-      else
-        for(Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
-          if(!prescribed[static_cast<std::size_t>(it.row())])
-            system.insert(it.row(), j) = it.value();
-    }
-    system.makeCompressed();
-    m_coupling.makeCompressed();
+    Eigen::SparseMatrix<double> system;
+    split(A, prescribed, system, m_coupling);
     if(n == 0)
       return m_factored = true;
     if constexpr(Takes_fill_reducing_ordering<SparseSPDSolverTraits>::value)
@@ -200,6 +170,61 @@ public:
   SparseSPDSolverTraits& solver() { return m_solver; }
 
 private:
+  // The system (the identity's rows and columns for the prescribed unknowns,
+  // A's entries between free ones) and the coupling (A's entries of free
+  // rows in prescribed columns), written straight into compressed storage in
+  // two passes over A: a new constraint set whose factor is updated, not made
+  // anew, does little else of order n.
+  static void split(const Eigen::SparseMatrix<double>& A, const std::vector<char>& prescribed,
+                    Eigen::SparseMatrix<double>& system, Eigen::SparseMatrix<double>& coupling)
+  {
+    typedef Eigen::SparseMatrix<double>::StorageIndex Index;
+    const Eigen::Index n = A.rows();
+    const auto free_row = [&prescribed](Index i) { return prescribed[static_cast<std::size_t>(i)] == 0; };
+    system.resize(n, n);
+    coupling.resize(n, n);
+    system.makeCompressed();
+    coupling.makeCompressed();
+    Index* system_start = system.outerIndexPtr();
+    Index* coupling_start = coupling.outerIndexPtr();
+    // Entries per column, then their offsets.
+    system_start[0] = coupling_start[0] = 0;
+    for(Eigen::Index j = 0; j < n; ++j)
+    {
+      Index free_entries = 0;
+      for(Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+        free_entries += free_row(static_cast<Index>(it.row())) ? 1 : 0;
+      const bool fixed = !free_row(static_cast<Index>(j));
+      system_start[j + 1] = system_start[j] + (fixed ? 1 : free_entries);
+      coupling_start[j + 1] = coupling_start[j] + (fixed ? free_entries : 0);
+    }
+    system.resizeNonZeros(system_start[n]);
+    coupling.resizeNonZeros(coupling_start[n]);
+    Index* system_rows = system.innerIndexPtr();
+    double* system_values = system.valuePtr();
+    Index* coupling_rows = coupling.innerIndexPtr();
+    double* coupling_values = coupling.valuePtr();
+    for(Eigen::Index j = 0; j < n; ++j)
+    {
+      const bool fixed = !free_row(static_cast<Index>(j));
+      Index k = fixed ? coupling_start[j] : system_start[j];
+      Index* rows = fixed ? coupling_rows : system_rows;
+      double* values = fixed ? coupling_values : system_values;
+      for(Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+        if(free_row(static_cast<Index>(it.row())))
+        {
+          rows[k] = static_cast<Index>(it.row());
+          values[k] = it.value();
+          ++k;
+        }
+      if(fixed)
+      {
+        system_rows[system_start[j]] = static_cast<Index>(j);
+        system_values[system_start[j]] = 1.0;
+      }
+    }
+  }
+
   SparseSPDSolverTraits m_solver;
   // One ordering of the whole matrix (empty when the solver found none), and
   // whether it was sought.

@@ -68,7 +68,21 @@ public:
     const std::vector<int>& parent = tree.parent;
     const std::vector<double>& entries = tree.entries;
     const std::vector<double>& subtree_entries = tree.subtree_entries;
-    std::vector<std::vector<int>> children(n);
+    // The children of each column in compressed rows (a vector per column
+    // cost more than the rest of the analysis on large factors).
+    std::vector<int> child_start(static_cast<std::size_t>(n) + 1, 0), children;
+    for(int j = 0; j < n; ++j)
+      if(parent[j] >= 0)
+        ++child_start[static_cast<std::size_t>(parent[j]) + 1];
+    for(int j = 0; j < n; ++j)
+      child_start[static_cast<std::size_t>(j) + 1] += child_start[static_cast<std::size_t>(j)];
+    children.resize(static_cast<std::size_t>(child_start[static_cast<std::size_t>(n)]));
+    {
+      std::vector<int> next(child_start.begin(), child_start.end() - 1);
+      for(int j = 0; j < n; ++j)
+        if(parent[j] >= 0)
+          children[static_cast<std::size_t>(next[static_cast<std::size_t>(parent[j])]++)] = j;
+    }
     // Columns alone in their tree (the rows of the identity of a Dirichlet
     // system) are dealt last, one by one, to balance the two threads.
     std::vector<int> candidates, isolated;
@@ -77,8 +91,8 @@ public:
     {
       total += entries[j];
       if(parent[j] >= 0)
-        children[parent[j]].push_back(j);
-      else if(subtree_entries[j] > 1)
+        continue;
+      if(subtree_entries[j] > 1)
         candidates.push_back(j);
       else
         isolated.push_back(j);
@@ -109,7 +123,8 @@ public:
       if(top_entries > 0.25 * total)
         return;
       candidates.erase(candidates.begin());
-      candidates.insert(candidates.end(), children[largest].begin(), children[largest].end());
+      candidates.insert(candidates.end(), children.begin() + child_start[static_cast<std::size_t>(largest)],
+                        children.begin() + child_start[static_cast<std::size_t>(largest) + 1]);
       if(candidates.empty())
         return;
     }
@@ -134,6 +149,12 @@ public:
     for(int j = n - 1; j >= 0; --j)
       if(owner[j] < 0 && m_top_slot[j] < 0 && parent[j] >= 0)
         owner[j] = owner[parent[j]];
+    std::size_t owned[2] = {0, 0};
+    for(int j = 0; j < n; ++j)
+      if(owner[j] >= 0)
+        ++owned[owner[j]];
+    m_columns[0].reserve(owned[0]);
+    m_columns[1].reserve(owned[1]);
     for(int j = 0; j < n; ++j)
       if(owner[j] >= 0)
         m_columns[owner[j]].push_back(j);
