@@ -429,8 +429,8 @@ std::string spectral_iterations(const CGAL::Spectral_deformation_report& report,
 }
 
 template <class Deformation>
-void record_deformation(const Deformation& deformation, bool linear, double seconds, const Mesh& mesh,
-                        Run_result& result)
+void record_deformation(const Deformation& deformation, bool linear, bool keep_smooth_meshes,
+                        double seconds, const Mesh& mesh, Run_result& result)
 {
   const CGAL::Spectral_deformation_report& report = deformation.deform_report();
   result.deform_seconds = seconds;
@@ -438,6 +438,8 @@ void record_deformation(const Deformation& deformation, bool linear, double seco
   result.message = report.message;
   result.iterations = spectral_iterations(report, linear);
   result.after = positions_of(mesh);
+  if(!keep_smooth_meshes)
+    return;
   if constexpr(Deformation::has_basis)
   {
     result.smooth_rest.resize(result.after.rows(), 3);
@@ -463,6 +465,7 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
                            const std::string& key, std::vector<Run_result>& results)
 {
   const bool linear = (TAG == CGAL::SPECTRAL_LINEAR);
+  const bool keep_smooth_meshes = !options.mesh_output_directory.empty(); // to write them
   Mesh mesh = c.mesh;
   Spectral_deformation<TAG, ET> deformation(mesh);
   select_vertices(deformation, c);
@@ -500,7 +503,7 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
   set_targets(deformation, c);
   const Clock::time_point deform_start = Clock::now();
   deformation.deform();
-  record_deformation(deformation, linear, seconds_since(deform_start), mesh, first);
+  record_deformation(deformation, linear, keep_smooth_meshes, seconds_since(deform_start), mesh, first);
   results.push_back(first);
 
   const CGAL::Spectral_deformation_report& report = deformation.deform_report();
@@ -516,7 +519,7 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
   set_targets(deformation, c);
   const Clock::time_point long_start = Clock::now();
   deformation.deform(options.long_iterations, deformation.tolerance());
-  record_deformation(deformation, linear, seconds_since(long_start), mesh, second);
+  record_deformation(deformation, linear, keep_smooth_meshes, seconds_since(long_start), mesh, second);
   results.push_back(second);
 }
 
