@@ -72,11 +72,17 @@ struct Cotangent_adjacency
 /// moment A_i = Σ_j |w_ij| (s_j − s_i)(s_j − s_i)ᵀ has numerical rank one,
 /// and the rotation about the curve is not determined by the one-ring: fitted
 /// alone, it follows round-off and crumples the details. Such a vertex
-/// (second eigenvalue of A_i below `rank_two_ratio` times the first) adds to
-/// its own covariance the mean covariance of its neighbours that are closer
-/// to a well-determined vertex, in breadth-first order, so that the rotation
-/// of the base of a thin feature carries on into it. Well-determined vertices
-/// are not changed. The order and the neighbours are fixed per rest shape.
+/// (second eigenvalue of A_i below `rank_two_ratio` times the first) takes
+/// from its one-ring only the direction of the feature: with a the principal
+/// axis of A_i and u = C_i a its image under the one-ring's covariance C_i,
+/// R_i maximizes uᵀ R a + ‖u‖ tr(Rᵀ R̄), R̄ the mean rotation of its
+/// neighbours that are closer to a well-determined vertex, in breadth-first
+/// order. The rotation of the base of a thin feature carries on into it, the
+/// feature's own direction bends it, and what the squeezed one-rings say
+/// about the turn around the feature, round-off, is left out: it would
+/// otherwise add up over the layers, whose number grows with the resolution.
+/// Well-determined vertices are not changed. The order, the neighbours and
+/// the axes are fixed per rest shape.
 class Smooth_rotation_field
 {
 public:
@@ -110,6 +116,16 @@ public:
       determined[static_cast<std::size_t>(i)] = (lambda[1] > rank_two_ratio * lambda[2]) ? 1 : 0;
     }
     order_undetermined(determined);
+    // The direction of the feature at each inheriting vertex: the principal
+    // axis of its rest moment (any unit vector where the one-ring is a point).
+    m_axes.resize(3, static_cast<Eigen::Index>(m_order.size()));
+    for(std::size_t k = 0; k < m_order.size(); ++k)
+    {
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+      eigen.computeDirect(moments[static_cast<std::size_t>(m_order[k])], Eigen::ComputeEigenvectors);
+      const Eigen::Vector3d axis = eigen.eigenvectors().col(2);
+      m_axes.col(static_cast<Eigen::Index>(k)) = axis.allFinite() ? axis : Eigen::Vector3d::UnitX();
+    }
   }
 
   /// The edges and their cotangent weights.
@@ -138,9 +154,9 @@ public:
   {
     const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_adjacency.number_of_vertices());
     rotations.resize(static_cast<std::size_t>(n));
-    // Only the vertices that inherit and those they inherit from keep their
-    // covariance (a slot each): the others turn it into their rotation at
-    // once, which saves an array of n matrices.
+    // Only the vertices that inherit keep their covariance (a slot each):
+    // the others turn it into their rotation at once, which saves an array
+    // of n matrices.
     std::vector<Eigen::Matrix3d>& C = m_covariances;
     C.resize(m_slot_count);
     // One pass: the covariance of each one-ring, and the rotation of the
@@ -157,26 +173,23 @@ public:
       if(!m_inherits[static_cast<std::size_t>(i)])
         rotations[static_cast<std::size_t>(i)] = nearest_rotation(c);
     }
-    // The inherited covariances layer after layer, in order; then the
-    // rotations of the inheriting vertices, which are independent of each
-    // other, on all threads (their nearly rank-one covariances often take the
-    // slower path of nearest_rotation()).
+    // Layer after layer, in order: the image of the feature's direction a
+    // (the rest moment's principal axis) under the one-ring's covariance C_i,
+    // u = C_i a, plus the mean rotation of the neighbours of the previous
+    // layer, weighed alike. The one-ring bends the feature; the rotation
+    // about it comes from the base alone, whatever the number of layers.
     for(std::size_t k = 0; k < m_order.size(); ++k)
     {
       const int begin = m_parent_start[k], end = m_parent_start[k + 1];
-      Eigen::Matrix3d inherited = Eigen::Matrix3d::Zero();
+      Eigen::Matrix3d mean_rotation = Eigen::Matrix3d::Zero();
       for(int p = begin; p < end; ++p)
-        inherited += C[static_cast<std::size_t>(m_parent_slots[static_cast<std::size_t>(p)])];
-      C[static_cast<std::size_t>(m_order_slots[k])] += inherited / double(end - begin);
-    }
-    const std::ptrdiff_t inheriting = static_cast<std::ptrdiff_t>(m_order.size());
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 256) if(inheriting > 2000)
-#endif
-    for(std::ptrdiff_t k = 0; k < inheriting; ++k)
-    {
-      const std::size_t i = static_cast<std::size_t>(m_order[static_cast<std::size_t>(k)]);
-      rotations[i] = nearest_rotation(C[static_cast<std::size_t>(m_order_slots[static_cast<std::size_t>(k)])]);
+        mean_rotation += rotations[static_cast<std::size_t>(m_parents[static_cast<std::size_t>(p)])];
+      mean_rotation /= double(end - begin);
+      const Eigen::Vector3d axis = m_axes.col(static_cast<Eigen::Index>(k));
+      const Eigen::Vector3d image = C[static_cast<std::size_t>(m_order_slots[k])] * axis;
+      const double weight = image.norm();
+      rotations[static_cast<std::size_t>(m_order[k])] = nearest_rotation(
+          weight > 0 ? Eigen::Matrix3d(image * axis.transpose() + weight * mean_rotation) : mean_rotation);
     }
   }
 
@@ -243,7 +256,7 @@ private:
         }
       }
     }
-    // The neighbours of each in the previous layer, by slot (below).
+    // The neighbours of each in the previous layer.
     std::vector<int> parents;
     m_parent_start.assign(1, 0);
     for(int i : m_order)
@@ -271,9 +284,7 @@ private:
     m_order_slots.clear();
     for(int i : m_order)
       m_order_slots.push_back(slot_of(i));
-    m_parent_slots.clear();
-    for(int j : parents)
-      m_parent_slots.push_back(slot_of(j));
+    m_parents = std::move(parents);
   }
 
   Cotangent_adjacency m_adjacency;
@@ -281,11 +292,12 @@ private:
   mutable Vertex_major_positions m_vertex_major;
   std::vector<int> m_order;        // undetermined vertices, breadth-first
   std::vector<char> m_inherits;    // per vertex: in m_order
-  std::vector<int> m_parent_start; // offsets into m_parent_slots, per entry of m_order
+  std::vector<int> m_parent_start; // offsets into m_parents, per entry of m_order
   std::vector<int> m_slot;         // per vertex: its covariance's index in m_covariances, or -1
   std::size_t m_slot_count = 0;
   std::vector<int> m_order_slots;  // the slots of m_order
-  std::vector<int> m_parent_slots; // the slots of their neighbours in the previous layer
+  std::vector<int> m_parents;      // their neighbours in the previous layer
+  Eigen::Matrix3Xd m_axes;         // per entry of m_order: the direction of the feature
   mutable std::vector<Eigen::Matrix3d> m_covariances; // by slot
 };
 
