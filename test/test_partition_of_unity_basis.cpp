@@ -297,3 +297,17 @@ TEST_CASE("Partition of unity basis: deformations reproduce rigid motions and fo
   CHECK(largest < 0.01);
   CHECK(moved > 0.1);
 }
+
+TEST_CASE("Partition of unity basis: the default number of samples grows with the mesh between 10 m and 20 m",
+          "[pou]")
+{
+  Partition_of_unity traits;
+  const Eigen::Index m = 100, per_sample = Partition_of_unity::vertices_per_sample();
+  CHECK(traits.number_of_samples(m) == 10 * m);                        // size not given
+  CHECK(traits.number_of_samples(m, 5 * per_sample * m) == 10 * m);     // small meshes: the floor
+  CHECK(traits.number_of_samples(m, 15 * per_sample * m) == 15 * m);    // in between: one per vertices_per_sample()
+  CHECK(traits.number_of_samples(m, 100 * per_sample * m) == 20 * m);   // large meshes: the ceiling
+  CHECK(traits.number_of_samples(5, 1000) == 200);                      // at least 200
+  traits.set_number_of_samples(345);
+  CHECK(traits.number_of_samples(m, 100 * per_sample * m) == 345);      // a set value wins
+}
