@@ -130,6 +130,23 @@ Spike_result deform_spiky_sphere(int levels, CGAL::Spectral_constraint_policy po
   return result;
 }
 
+// The triangles and positions of a soup, as the internal classes take them.
+internal::Mesh::Triangle_arrays triangle_arrays_of(const Soup& soup)
+{
+  internal::Mesh::Triangle_arrays arrays;
+  arrays.triangles.resize(static_cast<Eigen::Index>(soup.triangles.size()), 3);
+  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+      arrays.triangles(static_cast<Eigen::Index>(f), k) = static_cast<int>(soup.triangles[f][static_cast<std::size_t>(k)]);
+  arrays.positions.resize(static_cast<Eigen::Index>(soup.points.size()), 3);
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+  {
+    const Point& p = soup.points[i];
+    arrays.positions.row(static_cast<Eigen::Index>(i)) << p.x(), p.y(), p.z();
+  }
+  return arrays;
+}
+
 } // namespace
 
 TEST_CASE("nearest rotation: the Kabsch solution, reflections and rank two included",
@@ -203,21 +220,13 @@ TEST_CASE("smooth rotation field: a one-ring squeezed into a line inherits the r
   // A flat grid whose right half is squeezed to the line y = 0, z = 0 in the
   // smooth rest shape; the smooth deformed shape is a rigid rotation of it.
   const Soup grid = bumpy_plane(16, 0.0);
-  internal::Mesh::Triangles triangles(static_cast<Eigen::Index>(grid.triangles.size()), 3);
-  for(std::size_t f = 0; f < grid.triangles.size(); ++f)
-    for(int k = 0; k < 3; ++k)
-      triangles(static_cast<Eigen::Index>(f), k) = static_cast<int>(grid.triangles[f][static_cast<std::size_t>(k)]);
+  const internal::Mesh::Triangle_arrays detailed = triangle_arrays_of(grid);
   internal::Mesh::Positions rest(static_cast<Eigen::Index>(grid.points.size()), 3);
   for(std::size_t i = 0; i < grid.points.size(); ++i)
   {
     const Point& p = grid.points[i];
     rest.row(static_cast<Eigen::Index>(i)) << p.x(), (p.x() > 0.5 ? 1e-9 * p.y() : p.y()), p.z();
   }
-  internal::Mesh::Triangle_arrays detailed;
-  detailed.triangles = triangles;
-  detailed.positions.resize(rest.rows(), 3);
-  for(std::size_t i = 0; i < grid.points.size(); ++i)
-    detailed.positions.row(static_cast<Eigen::Index>(i)) << grid.points[i].x(), grid.points[i].y(), grid.points[i].z();
   internal::Deformation::Smooth_rotation_field field;
   field.initialize(internal::cotangent_stiffness(detailed), rest);
   CHECK(field.number_of_undetermined_vertices() > 100);
@@ -255,19 +264,12 @@ TEST_CASE("smooth rotation field: the turn about a squeezed feature comes from i
   for(int r = 0; r < 2; ++r)
   {
     const Soup grid = bumpy_plane(resolutions[r], 0.0);
-    internal::Mesh::Triangle_arrays detailed;
-    detailed.triangles.resize(static_cast<Eigen::Index>(grid.triangles.size()), 3);
-    for(std::size_t f = 0; f < grid.triangles.size(); ++f)
-      for(int k = 0; k < 3; ++k)
-        detailed.triangles(static_cast<Eigen::Index>(f), k) =
-            static_cast<int>(grid.triangles[f][static_cast<std::size_t>(k)]);
-    const Eigen::Index n = static_cast<Eigen::Index>(grid.points.size());
-    detailed.positions.resize(n, 3);
+    const internal::Mesh::Triangle_arrays detailed = triangle_arrays_of(grid);
+    const Eigen::Index n = detailed.positions.rows();
     internal::Mesh::Positions rest(n, 3), deformed(n, 3);
     for(Eigen::Index i = 0; i < n; ++i)
     {
       const Point& p = grid.points[static_cast<std::size_t>(i)];
-      detailed.positions.row(i) << p.x(), p.y(), p.z();
       const bool squeezed = p.x() > 0.5;
       rest.row(i) << p.x(), (squeezed ? width * p.y() : p.y()), p.z();
       // The squeezed width turned about the feature (the x axis).
@@ -300,18 +302,11 @@ TEST_CASE("smooth rotation field: one thread and all threads give the same bits"
   // 2,000 of them inheriting), its right half squeezed to a line, turned by
   // a non-rigid map so that every rotation differs.
   const Soup grid = bumpy_plane(160, 0.02);
-  internal::Mesh::Triangle_arrays detailed;
-  detailed.triangles.resize(static_cast<Eigen::Index>(grid.triangles.size()), 3);
-  for(std::size_t f = 0; f < grid.triangles.size(); ++f)
-    for(int k = 0; k < 3; ++k)
-      detailed.triangles(static_cast<Eigen::Index>(f), k) =
-          static_cast<int>(grid.triangles[f][static_cast<std::size_t>(k)]);
-  detailed.positions.resize(static_cast<Eigen::Index>(grid.points.size()), 3);
+  const internal::Mesh::Triangle_arrays detailed = triangle_arrays_of(grid);
   internal::Mesh::Positions rest(detailed.positions.rows(), 3);
   for(std::size_t i = 0; i < grid.points.size(); ++i)
   {
     const Point& p = grid.points[i];
-    detailed.positions.row(static_cast<Eigen::Index>(i)) << p.x(), p.y(), p.z();
     rest.row(static_cast<Eigen::Index>(i)) << p.x(), (p.x() > 0.5 ? 1e-9 * p.y() : p.y()), p.z();
   }
   REQUIRE(rest.rows() > 20000);

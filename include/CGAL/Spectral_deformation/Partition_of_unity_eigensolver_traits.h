@@ -91,9 +91,8 @@ public:
   {
     if(m_samples > 0)
       return m_samples;
-    const Eigen::Index by_size = n / vertices_per_sample();
-    return (std::max<Eigen::Index>)((std::min<Eigen::Index>)((std::max<Eigen::Index>)(by_size, 10 * m), 20 * m),
-                                    200);
+    const Eigen::Index by_size = std::clamp<Eigen::Index>(n / vertices_per_sample(), 10 * m, 20 * m);
+    return (std::max<Eigen::Index>)(by_size, 200);
   }
   /// Sets the number of sampled vertices; 0 (the default) means the rule of
   /// `number_of_samples()`.
