@@ -35,7 +35,9 @@ const char* const cgal_solver_name = "Eigen SparseLU (CGAL's default)";
 typedef CGAL::Surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL::SPOKES_AND_RIMS,
                                        CGAL::Default>
     Cgal_arap;
-typedef CGAL::Spectral_surface_mesh_deformation<Mesh> Spectral;
+typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL::SPECTRAL_DUAL_LAPLACIAN,
+                                                CGAL::Block_lanczos_eigensolver_traits<>>
+    Spectral;
 typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL::SPECTRAL_DUAL_LAPLACIAN,
                                                 CGAL::Partition_of_unity_eigensolver_traits<>>
     Spectral_partition_of_unity;

@@ -26,6 +26,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 extern "C" void* __libc_malloc(std::size_t);
@@ -112,8 +113,9 @@ Eigen::MatrixXd positions_of(const Surface_mesh& mesh)
 }
 
 // A small bent bar: the region above z = 0.5, the top ring rotated by 60
-// degrees; the block Lanczos eigensolver is forced (dense threshold 0) so
-// that its allocations are exercised too.
+// degrees; the block Lanczos eigensolver (dense threshold 0) or the
+// approximate basis (exact threshold 0) is forced so that its allocations
+// are exercised too.
 template <class Deformation>
 struct Bent_bar
 {
@@ -135,7 +137,16 @@ struct Bent_bar
     {
       deformation.set_number_of_frequencies(16);
       deformation.set_constraint_policy(policy);
-      deformation.set_eigensolver_traits(CGAL::Block_lanczos_eigensolver_traits<>(1e-6, 0, 0, 0));
+      typedef typename Deformation::Eigensolver_traits Eigensolver_traits;
+      if constexpr(std::is_same_v<Eigensolver_traits, CGAL::Block_lanczos_eigensolver_traits<>>)
+        deformation.set_eigensolver_traits(Eigensolver_traits(1e-6, 0, 0, 0));
+      else
+      {
+        Eigensolver_traits approximate; // 36 functions for the 16 frequencies
+        approximate.set_number_of_samples(12);
+        approximate.set_exact_threshold(0);
+        deformation.set_eigensolver_traits(approximate);
+      }
     }
     const Eigen::Quaterniond q(Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()));
     deformation.rotate(handle.begin(), handle.end(), Eigen::Vector3d(0, 0, 5), q);
@@ -213,11 +224,16 @@ void inject_failures(CGAL::Spectral_constraint_policy policy)
 
 TEST_CASE("fault injection: every allocation of preprocess() and deform() may fail", "[robustness][memory]")
 {
-  typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh> Spectral;
+  typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh, CGAL::Default, CGAL::Default,
+                                                  CGAL::SPECTRAL_DUAL_LAPLACIAN,
+                                                  CGAL::Block_lanczos_eigensolver_traits<>>
+      Spectral;
+  typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh> Spectral_approximate_basis;
   typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh, CGAL::Default, CGAL::Default,
                                                   CGAL::SPATIAL_DUAL_LAPLACIAN>
       Spatial;
   SECTION("spectral, exact constraints") { inject_failures<Spectral>(CGAL::EXACT_CONSTRAINTS); }
   SECTION("spectral, soft constraints") { inject_failures<Spectral>(CGAL::SOFT_CONSTRAINTS); }
+  SECTION("spectral, approximate basis") { inject_failures<Spectral_approximate_basis>(CGAL::EXACT_CONSTRAINTS); }
   SECTION("spatial") { inject_failures<Spatial>(CGAL::EXACT_CONSTRAINTS); }
 }

@@ -16,6 +16,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -235,13 +236,55 @@ TEST_CASE("Partition of unity basis: small meshes are solved exactly", "[pou]")
   CHECK((approximate.eigenvalues() - exact.eigenvalues()).cwiseAbs().maxCoeff() < 1e-8);
 }
 
+TEST_CASE("Partition of unity basis: the exact threshold decides what runs, and the progress says it", "[pou]")
+{
+  typedef Partition_of_unity::Progress Progress;
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(5)); // 10242 vertices
+  const Eigen::Index n = static_cast<Eigen::Index>(num_vertices(mesh));
+  const std::size_t m = 16;
+  Partition_of_unity traits;
+  traits.set_number_of_samples(400);
+  std::vector<Progress::Stage> stages;
+  traits.set_progress_callback([&stages](const Progress& p) {
+    stages.push_back(p.stage);
+    CHECK(p.number_of_vertices == 10242);
+    CHECK(p.number_of_eigenpairs == 16);
+  });
+
+  // 10242 vertices against 8 per function of 1200: approximated.
+  CHECK_FALSE(traits.solves_exactly(m, n));
+  const CGAL::Manifold_harmonics_basis<Surface_mesh, Partition_of_unity> approximate(
+      mesh, m, CGAL::parameters::default_values(), traits);
+  CHECK(stages == std::vector<Progress::Stage>{Progress::APPROXIMATION, Progress::FINISHED});
+
+  // An infinite threshold: the exact solver, its stages, its eigenpairs.
+  stages.clear();
+  traits.set_exact_threshold(std::numeric_limits<double>::infinity());
+  CHECK(traits.solves_exactly(m, n));
+  const CGAL::Manifold_harmonics_basis<Surface_mesh, Partition_of_unity> exact_through_traits(
+      mesh, m, CGAL::parameters::default_values(), traits);
+  const CGAL::Manifold_harmonics_basis<Surface_mesh> exact(mesh, m);
+  REQUIRE(stages.size() >= 3);
+  CHECK(stages.front() == Progress::FACTORIZATION);
+  CHECK(std::count(stages.begin(), stages.end(), Progress::ITERATION) >= 1);
+  CHECK(std::count(stages.begin(), stages.end(), Progress::APPROXIMATION) == 0);
+  CHECK(stages.back() == Progress::FINISHED);
+  CHECK((exact_through_traits.eigenvalues() - exact.eigenvalues()).cwiseAbs().maxCoeff() < 1e-12);
+  CHECK((exact_through_traits.basis() - exact.basis()).cwiseAbs().maxCoeff() < 1e-12);
+  // The approximation's eigenvalues are upper bounds, not the exact ones.
+  CHECK((approximate.eigenvalues() - exact.eigenvalues()).tail(m - 1).minCoeff() > 0);
+}
+
 TEST_CASE("Partition of unity basis: deformations reproduce rigid motions and follow the exact basis",
           "[pou]")
 {
   typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh, CGAL::Default, CGAL::Default,
                                                   CGAL::SPECTRAL_DUAL_LAPLACIAN, Partition_of_unity>
       Approximate;
-  typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh> Exact;
+  typedef CGAL::Spectral_surface_mesh_deformation<Surface_mesh, CGAL::Default, CGAL::Default,
+                                                  CGAL::SPECTRAL_DUAL_LAPLACIAN,
+                                                  CGAL::Block_lanczos_eigensolver_traits<>>
+      Exact;
   const double pi = 3.14159265358979323846;
 
   // A bar of 16k vertices, bottom fixed, top bent by 60 degrees.

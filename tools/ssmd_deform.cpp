@@ -45,8 +45,9 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 typedef Mesh::Vertex_index Vertex_index;
+// The eigensolver of --basis exact.
 typedef CGAL::Block_lanczos_eigensolver_traits<> Eigensolver_traits;
-// The eigensolver of --basis approximate.
+// The eigensolver of --basis approximate, the class's default.
 typedef CGAL::Partition_of_unity_eigensolver_traits<> Approximate_eigensolver_traits;
 typedef Deformation_tool::Basis_progress_bar<Eigensolver_traits::Progress> Progress_bar;
 
@@ -263,6 +264,7 @@ struct Run_report
   std::string basis_origin;
   std::size_t eigensolver_solves = 0;
   bool dense_eigensolve = false;
+  bool approximate_eigensolve = false;
   CGAL::Spectral_preprocess_report preprocess;
   CGAL::Spectral_deformation_report deform;
   double max_handle_residual = 0; // relative to the bounding-box diagonal of the mesh
@@ -414,9 +416,9 @@ private:
       deformation->set_constraint_policy(m_options.policy == Deformation_tool::Policy::EXACT
                                              ? CGAL::EXACT_CONSTRAINTS
                                              : CGAL::SOFT_CONSTRAINTS);
-      if constexpr(std::is_same_v<typename Deformation::Eigensolver_traits, Eigensolver_traits>)
+      if constexpr(Deformation::has_basis)
       {
-        Eigensolver_traits eigensolver;
+        typename Deformation::Eigensolver_traits eigensolver;
         eigensolver.set_process_wide_tuning(true); // this program owns its process
         eigensolver.set_progress_callback(
             [&progress_bar](const Eigensolver_traits::Progress& progress) { progress_bar(progress); });
@@ -501,7 +503,7 @@ private:
     if(m_options.approximate_basis)
       deform<TAG, Approximate_eigensolver_traits>(mesh, constraints);
     else
-      deform<TAG>(mesh, constraints);
+      deform<TAG, Eigensolver_traits>(mesh, constraints);
   }
 
   template <CGAL::Spectral_deformation_algorithm_tag TAG, class ET = CGAL::Default>
@@ -557,6 +559,7 @@ private:
       throw Tool_error("cannot prepare the deformation: " + m_report.preprocess.message);
     m_report.eigensolver_solves = progress_bar.solves();
     m_report.dense_eigensolve = progress_bar.dense();
+    m_report.approximate_eigensolve = progress_bar.approximate();
 
     if(!uses_basis)
       m_report.basis_origin = "not used by the spatial algorithm";
@@ -566,7 +569,7 @@ private:
     {
       std::ostringstream origin;
       origin << "computed in " << std::setprecision(3) << m_report.preprocess.basis_seconds << " s ("
-             << (m_options.approximate_basis ? std::string("approximate")
+             << (m_report.approximate_eigensolve ? std::string("approximate")
                  : m_report.dense_eigensolve ? std::string("dense solver")
                                              : std::to_string(m_report.eigensolver_solves) + " Lanczos solves")
              << ")";

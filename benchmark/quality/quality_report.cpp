@@ -401,7 +401,9 @@ Cgal_iterations run_cgal(const Deformation_case& c, unsigned int iterations, Run
   return run;
 }
 
-template <CGAL::Spectral_deformation_algorithm_tag TAG, class ET = CGAL::Default>
+// The exact basis unless a run asks for another (the class's default is the
+// partition-of-unity basis).
+template <CGAL::Spectral_deformation_algorithm_tag TAG, class ET = CGAL::Block_lanczos_eigensolver_traits<>>
 using Spectral_deformation =
     CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, TAG, ET>;
 

@@ -69,7 +69,12 @@ namespace CGAL {
 ///
 /// **Defaults**: 100 frequencies, constraint weight 1, at most 10 iterations,
 /// tolerance 1e-4 on the relative step, `EXACT_CONSTRAINTS` (the semantics of
-/// CGAL's class, which a drop-in replacement must keep).
+/// CGAL's class, which a drop-in replacement must keep), and the basis of
+/// `Partition_of_unity_eigensolver_traits<>`: eigenvectors approximated in a
+/// space of sampled functions on large regions, several times cheaper than
+/// the exact ones and measured to give deformations as good; exact
+/// eigenvectors on small regions. `Block_lanczos_eigensolver_traits<>` as `ET`
+/// computes the exact basis at every size.
 ///
 /// **Errors**: `preprocess()` and `deform()` do not throw
 /// `Spectral_deformation_error`: they report a failure in
@@ -89,7 +94,7 @@ namespace CGAL {
 ///         `SRE_ARAP`), which all select `SPECTRAL_DUAL_LAPLACIAN` (see
 ///         `algorithm`); any other value does not compile
 /// \tparam ET a model of `ManifoldHarmonicsEigensolverTraits`; `Default` means
-///         `Block_lanczos_eigensolver_traits<>`, and so does a weight
+///         `Partition_of_unity_eigensolver_traits<>`, and so does a weight
 ///         calculator of CGAL's class (a model of `SurfaceMeshDeformationWeights`,
 ///         the parameter at this position in CGAL), which is not used: the
 ///         method's operators are the cotangent Laplacian of the manifold
@@ -143,7 +148,7 @@ public:
   typedef typename Types::Hedge_index_map Hedge_index_map;
   /// The vertex point map type.
   typedef typename Types::Vertex_point_map Vertex_point_map;
-  /// The eigensolver traits type: `ET`, or `Block_lanczos_eigensolver_traits<>`
+  /// The eigensolver traits type: `ET`, or `Partition_of_unity_eigensolver_traits<>`
   /// when `ET` is `Default` or a weight calculator.
   typedef typename Types::Eigensolver_traits Eigensolver_traits;
   /// The sparse solver traits type of the detail transfer.

@@ -21,6 +21,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -52,6 +53,16 @@ inline CGAL::Spectral_constraint_policy policy_from_name(const std::string& name
   if(name == "soft")
     return CGAL::SOFT_CONSTRAINTS;
   throw py::value_error("policy must be 'exact' or 'soft', not '" + name + "'");
+}
+
+// Whether the basis is exact: 'exact' or 'approximate' (the library's default).
+inline bool exact_basis_from_name(const std::string& name)
+{
+  if(name == "approximate")
+    return false;
+  if(name == "exact")
+    return true;
+  throw py::value_error("basis must be 'approximate' or 'exact', not '" + name + "'");
 }
 
 inline CGAL::Spectral_smooth_energy energy_from_name(const std::string& name)
@@ -106,6 +117,7 @@ struct Deformation_settings
   std::size_t frequencies = 100;
   std::string policy = "exact";
   std::string energy = "dual_laplacian_and_arap";
+  std::string basis = "approximate";
   double constraint_weight = -1; // negative: the library's default
   bool single_precision_basis = false;
   long long rotation_patches = -1; // negative: the library's default
@@ -541,17 +553,28 @@ private:
       py::gil_scoped_release release;
       std::lock_guard<std::mutex> lock(m_mutex);
       visit([&](auto& d) {
-        if constexpr(std::decay_t<decltype(d)>::has_basis)
-          d.set_eigensolver_traits(bridge.traits());
+        typedef std::decay_t<decltype(d)> Deformation;
+        if constexpr(Deformation::has_basis)
+          d.set_eigensolver_traits(basis_traits(bridge.traits<typename Deformation::Eigensolver_traits>()));
         success = d.preprocess();
         // The traits refer to the bridge, which dies with this call.
-        if constexpr(std::decay_t<decltype(d)>::has_basis)
-          d.set_eigensolver_traits(Eigensolver_traits());
+        if constexpr(Deformation::has_basis)
+          d.set_eigensolver_traits(basis_traits(typename Deformation::Eigensolver_traits()));
       });
     }
     bridge.rethrow_if_failed();
     if(!success)
       throw py::value_error(preprocess_report_struct().message);
+  }
+
+  // The eigensolver traits of the setting `basis`: the approximate basis
+  // solves exactly at every size with an infinite exact threshold.
+  template <class Traits>
+  Traits basis_traits(Traits traits) const
+  {
+    if(exact_basis_from_name(m_settings.basis))
+      traits.set_exact_threshold(std::numeric_limits<double>::infinity());
+    return traits;
   }
 
   CGAL::Spectral_preprocess_report preprocess_report_struct()

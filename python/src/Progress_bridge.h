@@ -29,6 +29,7 @@ inline const char* stage_name(Eigensolver_traits::Progress::Stage stage)
   case Eigensolver_traits::Progress::ITERATION: return "iteration";
   case Eigensolver_traits::Progress::REFERENCE_SOLVE: return "reference_solve";
   case Eigensolver_traits::Progress::DENSE_SOLVE: return "dense_solve";
+  case Eigensolver_traits::Progress::APPROXIMATION: return "approximation";
   case Eigensolver_traits::Progress::FINISHED: return "finished";
   }
   return "unknown";
@@ -43,10 +44,12 @@ public:
   Progress_bridge(const Progress_bridge&) = delete;
   Progress_bridge& operator=(const Progress_bridge&) = delete;
 
-  // Eigensolver traits that report to the callback (plain traits without one).
-  Eigensolver_traits traits()
+  // Eigensolver traits that report to the callback (plain traits without
+  // one); `Traits` reports the `Progress` of `Eigensolver_traits`.
+  template <class Traits = Eigensolver_traits>
+  Traits traits()
   {
-    Eigensolver_traits traits;
+    Traits traits;
     if(!m_callback.is_none())
       traits.set_progress_callback([this](const Eigensolver_traits::Progress& progress) { report(progress); });
     return traits;

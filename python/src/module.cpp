@@ -109,6 +109,9 @@ degrees (None: the library's default, 30, with which large bends do not
 fold; 0: the targets in one stage).
 volume_preservation: the detail transfer keeps the volume the surface
 encloses (when the region is cut out of a closed surface).
+basis: 'approximate' (default: eigenvectors approximated in a space of sampled
+functions on large regions, several times faster, exact on small ones) or
+'exact' (the eigenvectors at every size).
 basis_cache: a file to read the basis from, or to write it to once computed.
 progress: a callable receiving a dict after each step of the eigensolver.
 
@@ -120,8 +123,8 @@ Raises ValueError for every input the library rejects, with its message.
                            const std::string& policy, const std::string& algorithm,
                            const std::string& energy, const py::object& constraint_weight, bool single_precision_basis,
                            const py::object& rotation_patches, const py::object& stage_angle,
-                           bool volume_preservation, const py::object& basis_cache,
-                           const py::object& progress) {
+                           bool volume_preservation, const std::string& basis,
+                           const py::object& basis_cache, const py::object& progress) {
              Deformation_settings settings;
              if(m < 1)
                throw py::value_error("m (the number of frequencies) must be positive, not " + std::to_string(m));
@@ -154,6 +157,8 @@ Raises ValueError for every input the library rejects, with its message.
                settings.stage_angle = degrees;
              }
              settings.volume_preservation = volume_preservation;
+             exact_basis_from_name(basis); // checked here, before the basis
+             settings.basis = basis;
              if(!basis_cache.is_none())
                settings.basis_cache = py::str(py::module_::import("os").attr("fspath")(basis_cache));
              if(!progress.is_none() && !PyCallable_Check(progress.ptr()))
@@ -166,7 +171,7 @@ Raises ValueError for every input the library rejects, with its message.
            py::arg("constraint_weight") = py::none(),
            py::arg("single_precision_basis") = false, py::arg("rotation_patches") = py::none(),
            py::arg("stage_angle") = py::none(), py::arg("volume_preservation") = false,
-           py::arg("basis_cache") = py::none(),
+           py::arg("basis") = "approximate", py::arg("basis_cache") = py::none(),
            py::arg("progress") = py::none())
       .def_property_readonly("number_of_vertices", &Deformation_session::number_of_vertices,
                              "The number of vertices n.")

@@ -358,6 +358,29 @@ def test_progress_callback_and_tqdm_like_bar(tube_mesh):
         ssmd.Deformation(V, F, fixed=fixed, handles=handles, progress=3)
 
 
+def test_approximate_and_exact_basis():
+    # 10,242 vertices against 8 per function of the approximate basis's
+    # space (600 functions for m = 10): approximated by default.
+    V, F = icosphere(5)
+    handles = np.flatnonzero(V[:, 2] > 0.8)
+    fixed = np.flatnonzero(V[:, 2] < -0.8)
+    targets = V[handles] + np.array([0.3, 0.0, 0.2])
+    results = {}
+    for basis in ("approximate", "exact"):
+        states = []
+        kwargs = {} if basis == "approximate" else {"basis": basis}
+        d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=10, progress=states.append, **kwargs)
+        stages = {s["stage"] for s in states}
+        assert ("approximation" in stages) == (basis == "approximate")
+        d.set_targets(targets)
+        results[basis] = d.deform()
+        assert np.max(np.abs(results[basis][handles] - targets)) <= 1e-12
+    difference = np.max(np.linalg.norm(results["approximate"] - results["exact"], axis=1))
+    assert 0 < difference < 0.02 * np.ptp(V, axis=0).max()
+    expect_value_error("basis must be 'approximate' or 'exact'",
+                       lambda: ssmd.Deformation(V, F, fixed=fixed, handles=handles, basis="fast"))
+
+
 def test_gil_is_released_during_the_eigensolve():
     V, F = icosphere(5)   # 10,242 vertices
     counter = [0]

@@ -112,6 +112,7 @@ public:
       m_step_times.add(static_cast<double>(progress.solves - 1),
                        std::chrono::duration<double>(now - m_iteration_start).count());
     m_dense = m_dense || progress.stage == Progress::DENSE_SOLVE;
+    m_approximate = m_approximate || progress.stage == Progress::APPROXIMATION;
     const bool stage_changed = progress.stage != m_last_stage;
     m_last_stage = progress.stage;
     if(m_display == Progress_display::TERMINAL)
@@ -140,6 +141,8 @@ public:
   std::size_t solves() const { return m_solves; }
   /// Whether the dense solver was used.
   bool dense() const { return m_dense; }
+  /// Whether the basis was approximated in a space of sampled functions.
+  bool approximate() const { return m_approximate; }
 
 private:
   static std::string seconds(double s)
@@ -215,6 +218,8 @@ private:
       return "factoring the shifted stiffness matrix";
     case Progress::DENSE_SOLVE:
       return "dense eigensolve";
+    case Progress::APPROXIMATION:
+      return "approximation in a space of sampled functions";
     case Progress::REFERENCE_SOLVE:
       return "reference Lanczos solver, " + std::to_string(progress.solves) + " solves";
     case Progress::ITERATION:
@@ -319,6 +324,7 @@ private:
     {
     case Progress::FACTORIZATION:
     case Progress::DENSE_SOLVE:
+    case Progress::APPROXIMATION:
       if(!stage_changed)
         return;
       out << "basis: " << progress.number_of_vertices << " vertices, "
@@ -361,6 +367,7 @@ private:
   int m_logged_tenth = 0;
   bool m_drawn = false;
   bool m_dense = false;
+  bool m_approximate = false;
 };
 
 } // namespace Deformation_tool

@@ -43,7 +43,7 @@ struct Command_line_options
   Algorithm algorithm = Algorithm::SPECTRAL;
   Policy policy = Policy::EXACT;
   Energy energy = Energy::DUAL_LAPLACIAN_AND_ARAP;
-  bool approximate_basis = false; // CGAL::Partition_of_unity_eigensolver_traits
+  bool approximate_basis = true; // CGAL::Partition_of_unity_eigensolver_traits; false: block Lanczos
   std::size_t frequencies = 100;
   long long rotation_patches = -1; // negative: the library's default
   double stage_angle = -1;         // degrees; negative: the library's default
@@ -255,7 +255,7 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
 {
   Command_line_options options;
   std::vector<std::string> files;
-  std::string algorithm = "spectral", policy = "exact", energy = "dual-laplacian-and-arap", basis = "exact";
+  std::string algorithm = "spectral", policy = "exact", energy = "dual-laplacian-and-arap", basis = "approximate";
 
   CLI::App app(internal::description_text(), "ssmd_deform");
   app.formatter(std::make_shared<internal::Help_formatter>());
@@ -314,9 +314,10 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
         return v == "dual-laplacian" || v == "arap" || v == "dual-laplacian-and-arap";
       }));
   app.add_option("--basis", basis,
-                 "how the basis of the spectral algorithms is computed: exact (default, the "
-                 "eigenvectors) or approximate (eigenvectors approximated in a space of functions "
-                 "around sampled vertices: several times faster on large meshes).")
+                 "how the basis of the spectral algorithms is computed: approximate (default; "
+                 "eigenvectors approximated in a space of functions around sampled vertices, "
+                 "several times faster on large meshes and exact on small ones) or exact (the "
+                 "eigenvectors, by block Lanczos).")
       ->option_text("NAME")
       ->check(internal::expects("--basis", "exact or approximate",
                                 [](const std::string& v) { return v == "exact" || v == "approximate"; }));

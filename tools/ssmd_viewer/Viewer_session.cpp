@@ -29,8 +29,8 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 typedef Mesh::Vertex_index Vertex_index;
-typedef CGAL::Block_lanczos_eigensolver_traits<> Eigensolver_traits;
 typedef CGAL::Spectral_surface_mesh_deformation<Mesh> Deformation;
+typedef Deformation::Eigensolver_traits Eigensolver_traits;
 typedef nlohmann::json Json;
 typedef std::chrono::steady_clock Clock;
 
@@ -101,6 +101,7 @@ const char* stage_name(Eigensolver_traits::Progress::Stage stage)
   case Eigensolver_traits::Progress::ITERATION: return "iteration";
   case Eigensolver_traits::Progress::REFERENCE_SOLVE: return "reference solve";
   case Eigensolver_traits::Progress::DENSE_SOLVE: return "dense solve";
+  case Eigensolver_traits::Progress::APPROXIMATION: return "approximation";
   case Eigensolver_traits::Progress::FINISHED: return "finished";
   }
   return "";

@@ -124,6 +124,7 @@ public:
       ITERATION,     ///< the subspace grows; reported after every block solve
       REFERENCE_SOLVE, ///< the reference solver runs: the mesh is below `reference_threshold()`, or the subspace reached its maximum dimension unconverged; reported after every solve of the reference solver
       DENSE_SOLVE,   ///< a small problem is solved with the dense solver (no intermediate report)
+      APPROXIMATION, ///< `Partition_of_unity_eigensolver_traits` builds its space of sampled functions and solves the reduced problem (no intermediate report)
       FINISHED       ///< `compute()` is about to return, successfully or not
     };
     Stage stage = FACTORIZATION;                   ///< the current stage

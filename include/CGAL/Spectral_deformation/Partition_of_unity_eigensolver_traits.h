@@ -72,9 +72,18 @@ namespace CGAL {
 template <class SparseSPDSolverTraits = Default_eigensolver_sparse_spd_solver_traits>
 class Partition_of_unity_eigensolver_traits
 {
+  typedef Block_lanczos_eigensolver_traits<SparseSPDSolverTraits> Exact_traits;
+
 public:
   /// Positions of the vertices, one row per vertex.
   typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Positions;
+  /// The state of a running `compute()`, passed to the progress callback:
+  /// the type of `Block_lanczos_eigensolver_traits`, whose stages the exact
+  /// solve of small meshes reports; the approximation reports
+  /// `Progress::APPROXIMATION`, then `Progress::FINISHED`.
+  typedef typename Exact_traits::Progress Progress;
+  /// The type of the progress callback.
+  typedef typename Exact_traits::Progress_callback Progress_callback;
 
   /// The number of sampled vertices `k` for `m` frequencies on a mesh of
   /// `n` vertices: the value set by `set_number_of_samples()`, or, by default
@@ -119,6 +128,28 @@ public:
   /// Sets the exact threshold.
   void set_exact_threshold(double vertices_per_function) { m_exact_threshold = vertices_per_function; }
 
+  /// Whether `compute()` solves `m` eigenpairs on `n` vertices exactly:
+  /// when `n` is below `exact_threshold()` vertices per function of the space.
+  /// Setting the threshold to infinity makes every solve exact.
+  bool solves_exactly(Eigen::Index m, Eigen::Index n) const
+  {
+    const double functions = static_cast<double>(number_of_samples(m, n) * (m_linear ? 3 : 1));
+    return static_cast<double>(n) < m_exact_threshold * functions;
+  }
+
+  /// Sets a function that `compute()` calls at the start of every stage (see
+  /// `Progress`) and once before it returns; the exact solve of small meshes
+  /// also reports its block solves. An empty function (the default) disables
+  /// the reports. The callback must not throw; it is copied with the traits.
+  void set_progress_callback(const Progress_callback& callback) { m_progress_callback = callback; }
+
+  /// Whether the exact solve of small meshes may change state of the whole
+  /// process to run faster (default `false`); the approximation itself
+  /// never does. See `Block_lanczos_eigensolver_traits::set_process_wide_tuning()`.
+  bool process_wide_tuning() const { return m_process_wide_tuning; }
+  /// Sets `process_wide_tuning()`.
+  void set_process_wide_tuning(bool enabled) { m_process_wide_tuning = enabled; }
+
   /// Sets the positions of the vertices of the next `compute()`: rows in the
   /// order of the rows of its stiffness matrix.
   void set_vertex_positions(const Positions& positions) { m_positions = positions; }
@@ -132,20 +163,38 @@ public:
   bool compute(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
                Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors)
   {
-    namespace E = Spectral_deformation::internal::Eigensolvers;
     m_error_message.clear();
     const Eigen::Index n = stiffness.rows();
     if(m < 1 || m > n)
       return fail("the number of eigenpairs must be between 1 and the number of vertices");
-    const Eigen::Index samples = number_of_samples(m, n);
-    const double functions = static_cast<double>(samples * (m_linear ? 3 : 1));
-    if(static_cast<double>(n) < m_exact_threshold * functions)
+    if(solves_exactly(m, n))
     {
-      Block_lanczos_eigensolver_traits<SparseSPDSolverTraits> exact;
+      Exact_traits exact;
+      exact.set_progress_callback(m_progress_callback);
+      exact.set_process_wide_tuning(m_process_wide_tuning);
       if(exact.compute(stiffness, mass, m, eigenvalues, eigenvectors))
         return true;
       return fail(exact.error_message());
     }
+    Progress progress;
+    progress.number_of_eigenpairs = static_cast<std::size_t>(m);
+    progress.number_of_vertices = static_cast<std::size_t>(n);
+    report(progress, Progress::APPROXIMATION);
+    const bool success = approximate(stiffness, mass, m, eigenvalues, eigenvectors);
+    report(progress, Progress::FINISHED);
+    return success;
+  }
+
+  /// The reason of the last failure of `compute()`.
+  const std::string& error_message() const { return m_error_message; }
+
+private:
+  bool approximate(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
+                   Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors)
+  {
+    namespace E = Spectral_deformation::internal::Eigensolvers;
+    const Eigen::Index n = stiffness.rows();
+    const Eigen::Index samples = number_of_samples(m, n);
     if(m_positions.rows() != n)
       return fail("the vertex positions were not set (set_vertex_positions()) or do not match "
                   "the stiffness matrix");
@@ -153,18 +202,23 @@ public:
       return fail("the support factor must be at least 1");
     try
     {
-      const E::Edge_length_graph graph = E::edge_length_graph(stiffness, m_positions);
-      double covering_radius = 0.0;
-      const std::vector<Eigen::Index> sampled =
-          E::farthest_point_samples(graph, samples, covering_radius);
-      if(!(covering_radius < std::numeric_limits<double>::infinity()))
-        return fail("the mesh has more connected components than samples");
-      if(!(covering_radius > 0.0))
-        return fail("every vertex is a sample: the mesh is too small for the sampled space");
-      const Eigen::SparseMatrix<double> space = E::partition_of_unity_functions(
-          graph, m_positions, sampled, m_support_factor * covering_radius, m_linear);
+      // The graph is freed before the basis is made: on large meshes the
+      // peak memory of the whole deformation is reached there.
+      Eigen::SparseMatrix<double> space;
+      {
+        const E::Edge_length_graph graph = E::edge_length_graph(stiffness, m_positions);
+        double covering_radius = 0.0;
+        const std::vector<Eigen::Index> sampled =
+            E::farthest_point_samples(graph, samples, covering_radius);
+        if(!(covering_radius < std::numeric_limits<double>::infinity()))
+          return fail("the mesh has more connected components than samples");
+        if(!(covering_radius > 0.0))
+          return fail("every vertex is a sample: the mesh is too small for the sampled space");
+        space = E::partition_of_unity_functions(graph, m_positions, sampled,
+                                                m_support_factor * covering_radius, m_linear);
+      }
       std::string message;
-      if(!E::reduced_eigenpairs<SparseSPDSolverTraits>(stiffness, mass, space, m, eigenvalues,
+      if(!E::reduced_eigenpairs<SparseSPDSolverTraits>(stiffness, mass, std::move(space), m, eigenvalues,
                                                        eigenvectors, message))
         return fail(message);
     }
@@ -181,10 +235,13 @@ public:
     return true;
   }
 
-  /// The reason of the last failure of `compute()`.
-  const std::string& error_message() const { return m_error_message; }
+  void report(Progress& progress, typename Progress::Stage stage) const
+  {
+    progress.stage = stage;
+    if(m_progress_callback)
+      m_progress_callback(progress);
+  }
 
-private:
   bool fail(const std::string& message)
   {
     m_error_message = message;
@@ -195,6 +252,8 @@ private:
   double m_support_factor = 2.0;
   bool m_linear = true;
   double m_exact_threshold = 8.0;
+  bool m_process_wide_tuning = false;
+  Progress_callback m_progress_callback;
   Positions m_positions;
   std::string m_error_message;
 };

@@ -7,7 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_DEFORMATION_CLASS_TYPES_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_DEFORMATION_CLASS_TYPES_H
 
-#include <CGAL/Spectral_deformation/Block_lanczos_eigensolver_traits.h>
+#include <CGAL/Spectral_deformation/Partition_of_unity_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Pipeline_selector.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Region_deformation.h>
@@ -31,7 +31,7 @@ template <class TM, class VIM, class HIM, auto TAG, class ET, class ST, class VP
 struct Deformation_class_types
 {
   typedef Algorithm_of<TAG> Algorithm;
-  typedef Eigensolver_argument<ET, TM, Block_lanczos_eigensolver_traits<>> Eigensolver;
+  typedef Eigensolver_argument<ET, TM, Partition_of_unity_eigensolver_traits<>> Eigensolver;
   typedef Sparse_solver_argument<ST> Sparse_solver;
 
   static_assert(Algorithm::valid,
@@ -43,7 +43,8 @@ struct Deformation_class_types
   static_assert(Eigensolver::valid,
                 "Spectral_surface_mesh_deformation: the 5th template argument (ET) must be "
                 "CGAL::Default, a model of ManifoldHarmonicsEigensolverTraits (such as "
-                "CGAL::Block_lanczos_eigensolver_traits<> or CGAL::Spectra_eigensolver_traits<>), "
+                "CGAL::Partition_of_unity_eigensolver_traits<>, CGAL::Block_lanczos_eigensolver_traits<> "
+                "or CGAL::Spectra_eigensolver_traits<>), "
                 "or a weight calculator of CGAL::Surface_mesh_deformation, which is not used; "
                 "write CGAL::Default");
   static_assert(Sparse_solver::valid,

@@ -519,9 +519,11 @@ private:
 // of the columns of `functions`: Spectra's shift-invert Lanczos on the
 // reduced pair (Pᵀ Q P, Pᵀ M P), then H = P Y. Returns false with `message`
 // set when the reduced problem is too small, singular or does not converge.
+// `functions` is released once the reduced pair is made (H is made from a
+// copy by rows).
 template <class SparseSPDSolverTraits>
 bool reduced_eigenpairs(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
-                        const Eigen::SparseMatrix<double>& functions, Eigen::Index m,
+                        Eigen::SparseMatrix<double>&& functions, Eigen::Index m,
                         Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
                         std::string& message)
 {
@@ -538,6 +540,7 @@ bool reduced_eigenpairs(const Eigen::SparseMatrix<double>& stiffness, const Eige
     const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
     Eigen::SparseMatrix<double> reduced_stiffness, reduced_mass;
     galerkin_matrices(stiffness, mass, functions, rows, reduced_stiffness, reduced_mass);
+    Eigen::SparseMatrix<double>().swap(functions);
 
     typedef Standard_form_shift_invert_operator<SparseSPDSolverTraits> Op;
     Op op(reduced_stiffness, reduced_mass);
