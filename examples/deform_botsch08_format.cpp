@@ -56,7 +56,7 @@ int main(int argc, char** argv)
   // A program that owns its process may let the solvers change process-wide
   // state to run faster (OpenBLAS threads, SuiteSparse's allocator); a
   // library embedding the package should not.
-  CGAL::Block_lanczos_eigensolver_traits<> eigensolver;
+  Deformation::Eigensolver_traits eigensolver;
   eigensolver.set_process_wide_tuning(true);
   deformation.set_eigensolver_traits(eigensolver);
   try
