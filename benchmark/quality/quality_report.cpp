@@ -107,7 +107,7 @@ struct Options
   CGAL::Spectral_smooth_energy smooth_energy = Default_settings().smooth_energy; // of the iteration
   double stage_angle = Default_settings::default_stage_angle * 180 / 3.14159265358979323846; // degrees
   bool volume_preservation = false;       // set_volume_preservation() of the spectral algorithms
-  bool partition_of_unity_basis = false; // the approximate basis instead of the exact one
+  bool partition_of_unity_basis = true; // the class's default, the approximate basis; false: the exact one
   Eigen::Index basis_samples = 0;         // of the approximate basis; 0: its default
   unsigned int long_iterations = 1000;      // of the additional runs
   unsigned int arap_large_iterations = 200; // of the additional CGAL runs on large ROIs
@@ -134,8 +134,9 @@ void print_usage(const char* program)
       << "  --frequencies m               basis size of the spectral algorithms (default 100)\n"
       << "  --rotation-patches k          rotation patches of the iteration (default: the\n"
       << "                                class's, " << Default_settings::default_rotation_patches << "; 0: the full iteration)\n"
-      << "  --basis B                     exact (default: Block_lanczos_eigensolver_traits) or\n"
-      << "                                partition-of-unity (Partition_of_unity_eigensolver_traits)\n"
+      << "  --basis B                     partition-of-unity (default, the class's:\n"
+      << "                                Partition_of_unity_eigensolver_traits) or exact\n"
+      << "                                (Block_lanczos_eigensolver_traits)\n"
       << "  --basis-samples k             samples of the partition-of-unity basis (default: its own)\n"
       << "  --smooth-energy E             dual-laplacian-and-arap (default), dual-laplacian or\n"
       << "                                arap: the energy of the iteration\n"

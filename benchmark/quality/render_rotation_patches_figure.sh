@@ -18,7 +18,7 @@ for patches in 0 1000; do
   mkdir -p "${work}/k${patches}"
   "${build_dir}/benchmark/quality/quality_report" --output "${work}/k${patches}.md" \
     --meshes "${build_dir}/data/meshes" --cases "${repository}/benchmark/quality/cases" \
-    --only armadillo_arm --case-levels armadillo_arm=1 --rotation-patches "${patches}" \
+    --only armadillo_arm --case-levels armadillo_arm=1 --rotation-patches "${patches}" --basis exact \
     --smooth-energy dual-laplacian --stage-angle 0 \
     --mesh-output "${work}/k${patches}" > /dev/null
 done

@@ -19,7 +19,7 @@ python=/usr/bin/python3
 for energy in dual-laplacian arap dual-laplacian-and-arap; do
   "${build_dir}/benchmark/quality/quality_report" --output "${work}/${energy}.md" \
     --meshes "${build_dir}/data/meshes" --cases "${repository}/benchmark/quality/cases" \
-    --only tube_twist,bar_twist --smooth-energy "${energy}" --stage-angle 0 --rotation-patches 0 --mesh-output "${work}/${energy}" > /dev/null
+    --only tube_twist,bar_twist --smooth-energy "${energy}" --stage-angle 0 --rotation-patches 0 --basis exact --mesh-output "${work}/${energy}" > /dev/null
 done
 colour() { # NAME DIR CASE ALGORITHM
   "${python}" "${repository}/scripts/edge_change_vtk.py" "$2/$3.input.off" "$2/$3.$4.off" "${work}/$1.vtk"

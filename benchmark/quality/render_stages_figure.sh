@@ -21,7 +21,7 @@ python=/usr/bin/python3
 for angle in 0 30; do
   "${build_dir}/benchmark/quality/quality_report" --output "${work}/${angle}.md" \
     --botsch08 "${botsch08}" --only cylinder \
-    --smooth-energy dual-laplacian-and-arap --stage-angle "${angle}" --rotation-patches 0 \
+    --smooth-energy dual-laplacian-and-arap --stage-angle "${angle}" --rotation-patches 0 --basis exact \
     --mesh-output "${work}/${angle}" > /dev/null
 done
 colour() { # NAME DIR ALGORITHM
