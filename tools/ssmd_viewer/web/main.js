@@ -95,7 +95,9 @@ function next(...types) { return new Promise((resolve) => waiters.push({ types, 
 function onJson(data) {
   if (data.type === 'progress') {
     $('progress').value = data.fraction;
-    $('stage').textContent = `basis: ${data.stage}, ${data.converged}/${data.wanted} frequencies, ${data.solves} solves`;
+    $('stage').textContent = data.stage === 'approximation'
+      ? `basis: approximation of ${data.wanted} frequencies in a space of sampled functions`
+      : `basis: ${data.stage}, ${data.converged}/${data.wanted} frequencies, ${data.solves} solves`;
   } else if (data.type === 'ready') {
     region = Uint32Array.from(data.region);
     center.fromArray(data.center);
