@@ -39,6 +39,7 @@ class Deformation:
         rotation_patches: Optional[int] = None,
         stage_angle: Optional[float] = None,
         volume_preservation: bool = False,
+        basis: str = "approximate",
         basis_cache: Optional[PathLike] = None,
         progress: Optional[ProgressCallback] = None,
     ) -> None: ...
