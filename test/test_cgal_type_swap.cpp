@@ -7,6 +7,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
+#include <CGAL/Spectral_deformation/Partition_of_unity_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
 
 #include <CGAL/Deformation_Eigen_polar_closest_rotation_traits_3.h>
@@ -157,6 +158,12 @@ TEST_CASE("type swap: a weight calculator at the position of ET is not used", "[
   static_assert(!internal::Deformation::Is_eigensolver_traits<Cotangent>::value);
   static_assert(internal::Deformation::Is_eigensolver_traits<CGAL::Spectra_eigensolver_traits<>>::value);
 
+  static_assert(internal::Deformation::Is_eigensolver_traits<CGAL::Partition_of_unity_eigensolver_traits<>>::value);
+  static_assert(!internal::Deformation::Is_weight_calculator<CGAL::Partition_of_unity_eigensolver_traits<>, Surface_mesh>::value);
+
+  // The default eigensolver is the approximate basis, and so is the one a
+  // weight calculator at its position leaves.
+  static_assert(std::is_same<Reference::Eigensolver_traits, CGAL::Partition_of_unity_eigensolver_traits<>>::value);
   typedef Swapped<CGAL::SPOKES_AND_RIMS, Half_cotangent> With_default_weights;
   static_assert(With_default_weights::has_unused_weight_calculator);
   static_assert(std::is_same<With_default_weights::Eigensolver_traits, Reference::Eigensolver_traits>::value);
