@@ -62,6 +62,8 @@ namespace CGAL {
 /// `exact_threshold()` vertices per sampled function) are solved exactly by
 /// `Block_lanczos_eigensolver_traits`, which is then as cheap.
 ///
+/// It is the default eigensolver of `Spectral_surface_mesh_deformation`.
+///
 /// The traits needs the vertex positions, which
 /// `CGAL::Manifold_harmonics_basis` and the deformation class hand it through
 /// `set_vertex_positions()` before `compute()`.
@@ -202,8 +204,8 @@ private:
       return fail("the support factor must be at least 1");
     try
     {
-      // The graph is freed before the basis is made: on large meshes the
-      // peak memory of the whole deformation is reached there.
+      // The graph is freed before the basis, the largest allocation of the
+      // computation, is made.
       Eigen::SparseMatrix<double> space;
       {
         const E::Edge_length_graph graph = E::edge_length_graph(stiffness, m_positions);
