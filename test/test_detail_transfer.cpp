@@ -133,18 +133,7 @@ Spike_result deform_spiky_sphere(int levels, CGAL::Spectral_constraint_policy po
 // The triangles and positions of a soup, as the internal classes take them.
 internal::Mesh::Triangle_arrays triangle_arrays_of(const Soup& soup)
 {
-  internal::Mesh::Triangle_arrays arrays;
-  arrays.triangles.resize(static_cast<Eigen::Index>(soup.triangles.size()), 3);
-  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
-    for(int k = 0; k < 3; ++k)
-      arrays.triangles(static_cast<Eigen::Index>(f), k) = static_cast<int>(soup.triangles[f][static_cast<std::size_t>(k)]);
-  arrays.positions.resize(static_cast<Eigen::Index>(soup.points.size()), 3);
-  for(std::size_t i = 0; i < soup.points.size(); ++i)
-  {
-    const Point& p = soup.points[i];
-    arrays.positions.row(static_cast<Eigen::Index>(i)) << p.x(), p.y(), p.z();
-  }
-  return arrays;
+  return internal::Mesh::extract_triangle_arrays(to_mesh<Surface_mesh>(soup), CGAL::parameters::default_values());
 }
 
 } // namespace
