@@ -945,8 +945,10 @@ void measure_anatomy(Deformation& d, const Deformation_case& c, int repetitions,
   row.values["fingerprint_matches"] = (SD::Mesh::fingerprint(region.arrays) == data.fingerprint) ? 1.0 : 0.0;
   if(SD::Mesh::fingerprint(region.arrays) != data.fingerprint || region.arrays.positions.rows() != n)
     throw std::runtime_error("anatomy: the region rebuilt here is not the region of the class");
+  SD::Linear_algebra::Stored_basis stored;
+  stored.assign(Eigen::MatrixXd(H), false);
   SD::Deformation::Spectral_dual_laplacian_solver solver;
-  solver.initialize(H, data.mass, region.arrays);
+  solver.initialize(stored, data.mass, region.arrays);
   if(!solver.preprocess(region.constrained, 1.0))
     throw std::runtime_error("anatomy: the reduced system is not positive definite");
   const SD::Mesh::Positions& smooth = solver.smooth_rest();

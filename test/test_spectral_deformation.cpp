@@ -633,6 +633,80 @@ TEST_CASE("a single-precision copy of the basis: close to double, and switched b
   CHECK(positions_of(fresh) == in_float);
 }
 
+TEST_CASE("a basis kept in float: the deformation of the double one, rigid motions exact, saved and loaded",
+          "[deformation]")
+{
+  const Soup soup = bar(16, 3);
+  Surface_mesh reference_mesh = to_mesh<Surface_mesh>(soup);
+  const Eigen::MatrixXd before = positions_of(reference_mesh);
+  const double diagonal = (before.colwise().maxCoeff() - before.colwise().minCoeff()).norm();
+  std::vector<SM_vertex> bottom, top;
+  select_ends(reference_mesh, 0.3, 4.7, bottom, top);
+  // `threshold`: the basis is kept in float from this many region vertices.
+  auto set_up = [&](Surface_mesh& mesh, Spectral& deformation, std::size_t threshold) {
+    deformation.set_single_precision_basis_threshold(threshold);
+    deformation.insert_roi_vertices(vertices(mesh).begin(), vertices(mesh).end());
+    deformation.insert_control_vertices(bottom.begin(), bottom.end());
+    deformation.insert_control_vertices(top.begin(), top.end());
+    deformation.set_number_of_frequencies(60);
+  };
+  auto bend = [&](Surface_mesh& mesh, Spectral& deformation) {
+    deformation.reset();
+    deformation.translate(top.begin(), top.end(), Eigen::Vector3d(1.5, 0, 0.5));
+    deformation.deform(10, 0.0);
+    return positions_of(mesh);
+  };
+
+  Spectral reference(reference_mesh);
+  CHECK(reference.single_precision_basis_threshold() == 200000);
+  set_up(reference_mesh, reference, reference.single_precision_basis_threshold());
+  const Eigen::MatrixXd in_double = bend(reference_mesh, reference);
+  CHECK_FALSE(reference.preprocess_report().single_precision_basis); // 16 × 3 bar: below the threshold
+
+  Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  Spectral single(mesh);
+  set_up(mesh, single, 0);
+  const Eigen::MatrixXd in_float = bend(mesh, single);
+  REQUIRE(single.preprocess_report().single_precision_basis);
+  // Everything is derived from the stored values: the rounding of the basis
+  // barely moves the result (a float copy read by the iteration only, whose
+  // reduced matrices come from the double basis, moves it by 1e-4).
+  const double deviation = (in_float - in_double).rowwise().norm().maxCoeff() / diagonal;
+  CHECK(deviation > 0.0);
+  CHECK(deviation < 1e-5);
+
+  // A rigid motion of every control vertex moves the whole bar rigidly.
+  const internal::Deformation::Rigid_motion turn = motion(pi / 5, Eigen::Vector3d(0.3, 1, 0.2).normalized(),
+                                                          Eigen::Vector3d(0.4, -0.2, 0.7));
+  single.reset();
+  for(const std::vector<SM_vertex>* end : {&bottom, &top})
+    for(SM_vertex v : *end)
+    {
+      const Eigen::RowVector3d p = turn.apply(before.row(v.idx()));
+      single.set_target_position(v, Point(p[0], p[1], p[2]));
+    }
+  single.deform(2000, 1e-13);
+  INFO("iterations " << single.deform_report().iterations);
+  CHECK((positions_of(mesh) - moved_rigidly(before, turn)).rowwise().norm().maxCoeff() / diagonal < 1e-6);
+
+  // Saved widened to double and loaded, the basis gives the same deformation,
+  // kept in float or in double.
+  std::ostringstream out;
+  single.save_basis(out);
+  for(const std::size_t threshold : {std::size_t(0), std::numeric_limits<std::size_t>::max()})
+  {
+    Surface_mesh copy = to_mesh<Surface_mesh>(soup);
+    Spectral loaded(copy);
+    set_up(copy, loaded, threshold);
+    std::istringstream in(out.str());
+    loaded.load_basis(in);
+    const Eigen::MatrixXd result = bend(copy, loaded);
+    CHECK_FALSE(loaded.preprocess_report().basis_computed);
+    CHECK(loaded.preprocess_report().single_precision_basis == (threshold == 0));
+    CHECK((result - in_float).rowwise().norm().maxCoeff() / diagonal < 1e-12);
+  }
+}
+
 TEST_CASE("Surface_mesh and Polyhedron_3 give the same deformation", "[deformation]")
 {
   const Soup soup = bar(12, 2);

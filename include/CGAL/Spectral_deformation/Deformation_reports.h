@@ -27,6 +27,7 @@ struct Spectral_preprocess_report
   bool basis_computed = false;              ///< the eigensolver ran (not reused, handed in or loaded)
   std::size_t number_of_region_vertices = 0;///< vertices of the region of interest and their fixed ring
   std::size_t number_of_frequencies = 0;    ///< basis functions in use (spectral algorithms; 0 with `SPATIAL_DUAL_LAPLACIAN`)
+  bool single_precision_basis = false;      ///< the basis is kept in float (see `Spectral_parameters::set_single_precision_basis_threshold()`)
   std::size_t number_of_constrained_vertices = 0; ///< control vertices and fixed ring vertices
   double region_seconds = 0;                ///< region extraction, validation, basis, per-region matrices and factorizations
   double basis_seconds = 0;                 ///< of which the eigensolve (with the exact policy's first sparse factorization, which runs on a second thread meanwhile when two threads are available)

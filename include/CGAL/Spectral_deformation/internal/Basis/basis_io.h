@@ -17,6 +17,7 @@
 #include <istream>
 #include <ostream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -63,16 +64,20 @@ private:
 
 /// Writes a header (format tag and version, numbers of vertices, faces and
 /// frequencies, mesh fingerprint), the eigenvalues, the mass, the basis and a
-/// checksum of all of it. Throws IO_ERROR when the stream fails.
-inline void write_basis(std::ostream& os, const Basis_data& data)
+/// checksum of all of it. Throws IO_ERROR when the stream fails. The basis
+/// is `basis`, in double or float (written widened to double), in place of
+/// `data.basis`.
+template <typename Scalar>
+void write_basis(std::ostream& os, const Basis_data& data,
+                 const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& basis)
 {
   Checksummed_stream sum;
   auto write = [&](const void* bytes, std::size_t size) {
     os.write(static_cast<const char*>(bytes), static_cast<std::streamsize>(size));
     sum.add(bytes, size);
   };
-  const std::uint64_t n = static_cast<std::uint64_t>(data.basis.rows());
-  const std::uint64_t m = static_cast<std::uint64_t>(data.basis.cols());
+  const std::uint64_t n = static_cast<std::uint64_t>(basis.rows());
+  const std::uint64_t m = static_cast<std::uint64_t>(basis.cols());
   write(basis_format_tag, sizeof(basis_format_tag));
   write(&basis_format_version, sizeof(basis_format_version));
   write(&n, sizeof(n));
@@ -81,13 +86,26 @@ inline void write_basis(std::ostream& os, const Basis_data& data)
   write(&data.fingerprint, sizeof(data.fingerprint));
   write(data.eigenvalues.data(), sizeof(double) * static_cast<std::size_t>(data.eigenvalues.size()));
   write(data.mass.data(), sizeof(double) * static_cast<std::size_t>(data.mass.size()));
-  write(data.basis.data(), sizeof(double) * static_cast<std::size_t>(data.basis.size()));
+  if constexpr(std::is_same<Scalar, double>::value)
+    write(basis.data(), sizeof(double) * static_cast<std::size_t>(basis.size()));
+  else
+  {
+    Eigen::VectorXd column;
+    for(Eigen::Index j = 0; j < basis.cols(); ++j)
+    {
+      column = basis.col(j).template cast<double>();
+      write(column.data(), sizeof(double) * static_cast<std::size_t>(column.size()));
+    }
+  }
   const std::uint64_t checksum = sum.value();
   os.write(reinterpret_cast<const char*>(&checksum), sizeof(checksum));
   if(!os)
     throw Spectral_deformation_error(Spectral_deformation_error::IO_ERROR,
                                      "save: writing the basis failed");
 }
+
+/// Writes `data` with its own basis (see above).
+inline void write_basis(std::ostream& os, const Basis_data& data) { write_basis(os, data, data.basis); }
 
 /// The number of bytes left in `is`, or -1 when the stream cannot tell
 /// (a pipe, for instance). The position and state of `is` are kept.

@@ -238,11 +238,12 @@ inline std::vector<int> cluster_vertices(const Dual_mesh_operator& dual, const P
 class Clustered_rotation_rhs
 {
 public:
-  /// `basis` n×m, `dual` the dual mesh of the region, `weights` and
+  /// `basis` n×m (a dense matrix of double or float), `dual` the dual mesh of the region, `weights` and
   /// `coordinates` the rest dual coordinates (rows of `dual`), `smooth_rest`
   /// the rest positions of the iteration, `patch_of_row` from
   /// `cluster_dual_rows()`.
-  void initialize(const Eigen::MatrixXd& basis, const Dual_mesh_operator& dual,
+  template <class Basis>
+  void initialize(const Basis& basis, const Dual_mesh_operator& dual,
                   const Eigen::Matrix<double, Eigen::Dynamic, 3>& weights, const Positions& coordinates,
                   const Positions& smooth_rest, const std::vector<int>& patch_of_row)
   {
@@ -268,7 +269,8 @@ public:
   /// The as-rigid-as-possible form: `basis` n×m, `adjacency` the edges and
   /// weights of the cotangent stiffness, `smooth_rest` the rest positions of
   /// the iteration, `patch_of_vertex` from `cluster_vertices()`.
-  void initialize_arap(const Eigen::MatrixXd& basis, const Cotangent_adjacency& adjacency,
+  template <class Basis>
+  void initialize_arap(const Basis& basis, const Cotangent_adjacency& adjacency,
                        const Positions& smooth_rest, const std::vector<int>& patch_of_vertex)
   {
     const Eigen::Index m = basis.cols();
@@ -492,7 +494,8 @@ private:
 
   // K and P: the contributions in the order of their vertices (a counting
   // sort), then one pass over the rows of H.
-  void accumulate_products(const Eigen::MatrixXd& basis, const std::vector<std::vector<Contribution>>& gathered)
+  template <class Basis>
+  void accumulate_products(const Basis& basis, const std::vector<std::vector<Contribution>>& gathered)
   {
     const Eigen::Index n = basis.rows();
     std::vector<int> first(static_cast<std::size_t>(n) + 1, 0);

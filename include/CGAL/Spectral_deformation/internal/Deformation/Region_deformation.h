@@ -162,16 +162,16 @@ public:
   void supply_basis(Basis_data data)
   {
     m_supplied_basis = std::move(data);
-    if(m_region && !m_region->pipeline.basis().empty() &&
-       m_supplied_basis.fingerprint != m_region->pipeline.basis().fingerprint)
+    if(m_region && m_region->pipeline.has_basis() &&
+       m_supplied_basis.fingerprint != m_region->pipeline.basis_fingerprint())
       drop_region();
   }
 
   void save_basis(std::ostream& os) const
   {
-    if(!m_region || m_region->pipeline.basis().empty())
+    if(!m_region || !m_region->pipeline.has_basis())
       throw Error(Error::IO_ERROR, "save_basis: no basis yet, call preprocess() first");
-    Basis::write_basis(os, m_region->pipeline.basis());
+    m_region->pipeline.write_basis(os);
   }
 
   /// Reads a basis and checks it against the region of the current ROI.
@@ -333,7 +333,10 @@ private:
         throw Error(Error::INVALID_MESH, "control vertex " + std::to_string(i) + " belongs to no face");
     m_preprocess_report.number_of_region_vertices = region.vertices.size();
     if constexpr(is_spectral)
+    {
       m_preprocess_report.number_of_frequencies = region.pipeline.number_of_frequencies();
+      m_preprocess_report.single_precision_basis = region.pipeline.single_precision_basis();
+    }
 
     m_constraints = selection_constraints(selection, region);
     m_preprocess_report.number_of_constrained_vertices = m_constraints.size();

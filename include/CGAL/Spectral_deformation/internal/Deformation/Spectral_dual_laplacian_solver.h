@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -31,8 +32,8 @@ namespace Spectral_deformation {
 namespace internal {
 namespace Deformation {
 
-using Linear_algebra::Basis_columns;
 using Linear_algebra::Basis_panels;
+using Linear_algebra::Stored_basis;
 using Mesh::Dual_coordinates;
 using Mesh::Dual_mesh_operator;
 using Mesh::Positions;
@@ -61,8 +62,9 @@ public:
   typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Positions;
 
   /// `basis` n×m M-orthonormal, `mass` its lumped mass, `positions` the rest
-  /// positions (n×3), `triangles` the faces.
-  void initialize(const Eigen::MatrixXd& basis, const Eigen::VectorXd& mass,
+  /// positions (n×3), `triangles` the faces. The solver reads `basis`, which
+  /// must outlive it and stay unchanged.
+  void initialize(const Stored_basis& basis, const Eigen::VectorXd& mass,
                   const Triangle_arrays& rest)
   {
     initialize(basis, mass, rest, nullptr);
@@ -70,33 +72,45 @@ public:
 
   /// As above, with `stiffness` the cotangent stiffness of `rest`
   /// (`cotangent_stiffness()`), already computed by the caller.
-  void initialize(const Eigen::MatrixXd& basis, const Eigen::VectorXd& mass, const Triangle_arrays& rest,
+  void initialize(const Stored_basis& basis, const Eigen::VectorXd& mass, const Triangle_arrays& rest,
                   const Eigen::SparseMatrix<double>& stiffness)
   {
     initialize(basis, mass, rest, &stiffness);
   }
 
 private:
-  void initialize(const Eigen::MatrixXd& basis, const Eigen::VectorXd& mass, const Triangle_arrays& rest,
+  void initialize(const Stored_basis& basis, const Eigen::VectorXd& mass, const Triangle_arrays& rest,
                   const Eigen::SparseMatrix<double>* stiffness)
   {
     m_basis = &basis;
     assign_panels();
     m_mass = mass;
     m_dual = Dual_mesh_operator(rest.triangles, rest.number_of_vertices());
-    m_rest_coefficients = basis.transpose() * (mass.asDiagonal() * rest.positions);
-    m_smooth_rest = basis * m_rest_coefficients;
+    basis.visit([this, &mass, &rest](const auto& H) {
+      if constexpr(std::is_same<typename std::decay_t<decltype(H)>::Scalar, double>::value)
+      {
+        m_rest_coefficients = H.transpose() * (mass.asDiagonal() * rest.positions);
+        m_smooth_rest = H * m_rest_coefficients;
+      }
+      else
+      {
+        m_basis->multiply_transpose(Positions(mass.asDiagonal() * rest.positions), m_rest_coefficients);
+        m_basis->multiply(m_rest_coefficients, m_smooth_rest);
+      }
+    });
     if(uses_dual_energy())
     {
       m_rest_coordinates = m_dual.evaluate(m_smooth_rest);
       m_negative_heights = -m_rest_coordinates.heights;
       const Dual_coordinates& rest_coordinates = m_rest_coordinates;
-      Linear_algebra::gram_in_basis(
-          m_dual.number_of_rows(),
-          [this, &rest_coordinates](Eigen::Index r, const double* h) {
-            return m_dual.apply_row(rest_coordinates.weights, r, h);
-          },
-          basis, m_G0);
+      basis.visit([this, &rest_coordinates](const auto& H) {
+        Linear_algebra::gram_in_basis(
+            m_dual.number_of_rows(),
+            [this, &rest_coordinates](Eigen::Index r, const auto* h) {
+              return m_dual.apply_row(rest_coordinates.weights, r, h);
+            },
+            H, m_G0);
+      });
     }
     else
     {
@@ -116,7 +130,7 @@ private:
       const Eigen::SparseMatrix<double>& Q = *stiffness;
       m_rotated_edges.initialize(Q, m_smooth_rest, m_smooth_rest);
       Eigen::MatrixXd arap;
-      Linear_algebra::sparse_in_basis(Q, basis, arap);
+      basis.visit([&Q, &arap](const auto& H) { Linear_algebra::sparse_in_basis(Q, H, arap); });
       // The sum weighs the two energies alike: its two matrices get the same
       // trace (their ratio depends on the resolution of the mesh).
       if(uses_dual_energy() && arap.trace() > 0)
@@ -153,11 +167,13 @@ public:
       build_patches();
   }
 
-  /// Whether the iteration reads a float copy of the basis (the
-  /// arithmetic stays in double). The reduced systems amplify the rounding of
-  /// the copy: the result moved by about 1e-4 of the bounding-box diagonal
-  /// from the double one (armadillo arm, 104k vertices), which is why it is
-  /// not the default.
+  /// Whether the iteration reads a float copy of a basis stored in double
+  /// (the arithmetic stays in double). The reduced systems amplify the
+  /// rounding of the copy, which the reduced matrices, computed from the
+  /// double basis, do not share: the result moved by about 1e-4 of the
+  /// bounding-box diagonal from the double one (armadillo arm, 104k
+  /// vertices), which is why it is not the default. A basis stored in float
+  /// has no copy.
   bool single_precision() const { return m_single_precision; }
   /// Sets single_precision(); an initialized solver copies the basis again.
   void set_single_precision(bool single)
@@ -194,12 +210,13 @@ public:
   /// positive definite.
   bool preprocess(const std::vector<int>& constrained, double weight)
   {
-    const Eigen::MatrixXd& H = *m_basis;
     m_constrained = constrained;
     m_weight = weight;
-    m_constrained_rows.resize(static_cast<Eigen::Index>(constrained.size()), H.cols());
-    for(std::size_t k = 0; k < constrained.size(); ++k)
-      m_constrained_rows.row(static_cast<Eigen::Index>(k)) = H.row(constrained[k]);
+    m_constrained_rows.resize(static_cast<Eigen::Index>(constrained.size()), m_basis->cols());
+    m_basis->visit([this, &constrained](const auto& H) {
+      for(std::size_t k = 0; k < constrained.size(); ++k)
+        m_constrained_rows.row(static_cast<Eigen::Index>(k)) = H.row(constrained[k]).template cast<double>();
+    });
     Eigen::MatrixXd A = m_G0;
     A.selfadjointView<Eigen::Lower>().rankUpdate(m_constrained_rows.transpose(), weight * weight);
     A.triangularView<Eigen::StrictlyUpper>() = A.transpose();
@@ -318,15 +335,19 @@ private:
     {
       const std::vector<int> patch_of_vertex =
           cluster_vertices(m_dual, m_dual.centroids(m_smooth_rest), m_smooth_rest.rows(), m_patch_count);
-      m_arap_patches.initialize_arap(*m_basis, m_rotated_edges.rotation_field().adjacency(), m_smooth_rest,
-                                     patch_of_vertex);
+      m_basis->visit([this, &patch_of_vertex](const auto& H) {
+        m_arap_patches.initialize_arap(H, m_rotated_edges.rotation_field().adjacency(), m_smooth_rest,
+                                       patch_of_vertex);
+      });
     }
     if(!uses_dual_energy())
       return;
     const std::vector<int> patch_of_row =
         cluster_dual_rows(m_dual, m_dual.centroids(m_smooth_rest), m_patch_count);
-    m_patches.initialize(*m_basis, m_dual, m_rest_coordinates.weights, m_rest_coordinates.coordinates,
-                         m_smooth_rest, patch_of_row);
+    m_basis->visit([this, &patch_of_row](const auto& H) {
+      m_patches.initialize(H, m_dual, m_rest_coordinates.weights, m_rest_coordinates.coordinates, m_smooth_rest,
+                           patch_of_row);
+    });
   }
 
   // The iteration of solve() with the rotations of the patches: no step
@@ -369,13 +390,13 @@ private:
     return report.stop_after(iteration, step, tolerance);
   }
 
-  // In double the iteration reads the basis itself; in single precision its
-  // own float copy.
+  // The iteration reads the basis itself, or the float copy of a double one
+  // in single precision.
+  bool uses_float_copy() const { return m_single_precision && !m_basis->single_precision(); }
   void assign_panels()
   {
-    m_columns.assign(*m_basis);
-    if(m_single_precision)
-      m_float_panels.assign(*m_basis);
+    if(uses_float_copy())
+      m_basis->visit([this](const auto& H) { m_float_panels.assign(H); });
     else
       m_float_panels = Basis_panels<float>();
   }
@@ -383,19 +404,19 @@ private:
   template <typename Shape>
   void multiply(const Eigen::MatrixXd& coefficients, Shape& shape) const
   {
-    if(m_single_precision)
+    if(uses_float_copy())
       m_float_panels.multiply(coefficients, shape);
     else
-      m_columns.multiply(coefficients, shape);
+      m_basis->multiply(coefficients, shape);
   }
 
   template <class Values>
   void multiply_transpose(const Values& values, Eigen::MatrixXd& result) const
   {
-    if(m_single_precision)
+    if(uses_float_copy())
       m_float_panels.multiply_transpose(values, result);
     else
-      m_columns.multiply_transpose(values, result);
+      m_basis->multiply_transpose(values, result);
   }
 
   // Buffers of the iteration, kept between calls: the first touch of fresh
@@ -409,8 +430,7 @@ private:
   bool uses_dual_energy() const { return m_energy != ARAP_ENERGY; }
   bool uses_arap_energy() const { return m_energy != DUAL_LAPLACIAN_ENERGY; }
 
-  const Eigen::MatrixXd* m_basis = nullptr;
-  Basis_columns m_columns;
+  const Stored_basis* m_basis = nullptr;
   Basis_panels<float> m_float_panels;
   bool m_single_precision = false;
 

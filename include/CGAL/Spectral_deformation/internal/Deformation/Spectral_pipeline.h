@@ -18,6 +18,7 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Target_stages.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
 #include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 #include <CGAL/Spectral_deformation/internal/available_threads.h>
@@ -28,6 +29,7 @@
 #include <chrono>
 #include <cstddef>
 #include <exception>
+#include <ostream>
 #include <system_error>
 #include <thread>
 #include <utility>
@@ -52,6 +54,8 @@ struct Spectral_settings
   double weight = 1.0;
   Spectral_constraint_policy policy = EXACT_CONSTRAINTS;
   bool single_precision_basis = false;
+  // Regions of at least this many vertices keep their basis in float.
+  std::size_t single_precision_basis_threshold = default_single_precision_basis_threshold;
   // The defaults are those of the quality sweep of the manual: no folded
   // faces on large bends and twists, ARAP energies within a few per cent of
   // the full iteration's, and an iteration whose cost does not grow with n.
@@ -61,6 +65,7 @@ struct Spectral_settings
   bool preserve_volume = false;             // the detail transfer keeps the enclosed volume
 
   static constexpr std::size_t default_rotation_patches = 1000;
+  static constexpr std::size_t default_single_precision_basis_threshold = 200000;
   static constexpr double default_stage_angle = 3.14159265358979323846 / 6;
 };
 
@@ -112,12 +117,15 @@ public:
       report.basis_computed = true;
       report.basis_seconds = seconds_since(start);
     }
+    m_stored_basis.assign(std::move(m_basis.basis),
+                          static_cast<std::size_t>(region.arrays.number_of_vertices()) >=
+                              settings.single_precision_basis_threshold);
     m_solver.set_single_precision(settings.single_precision_basis);
     m_solver.set_rotation_patches(settings.rotation_patches);
     // Without iterations there are no rotations to fit: the linear
     // algorithm keeps the paper's system.
     m_solver.set_smooth_energy(Iterated ? settings.smooth_energy : DUAL_LAPLACIAN_ENERGY);
-    m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays, stiffness);
+    m_solver.initialize(m_stored_basis, m_basis.mass, region.arrays, stiffness);
     m_detail.set_smooth_rest(m_solver.smooth_rest());
     m_has_solution = false;
   }
@@ -225,11 +233,20 @@ public:
     if(!Iterated || energy == m_solver.smooth_energy())
       return;
     m_solver.set_smooth_energy(energy);
-    m_solver.initialize(m_basis.basis, m_basis.mass, region.arrays, m_detail.stiffness());
+    m_solver.initialize(m_stored_basis, m_basis.mass, region.arrays, m_detail.stiffness());
     m_has_solution = false;
   }
-  const Basis_data& basis() const { return m_basis; }
-  std::size_t number_of_frequencies() const { return static_cast<std::size_t>(m_basis.basis.cols()); }
+  bool has_basis() const { return !m_stored_basis.empty(); }
+  std::uint64_t basis_fingerprint() const { return m_basis.fingerprint; }
+  /// Whether the basis is kept in float (`Stored_basis`).
+  bool single_precision_basis() const { return m_stored_basis.single_precision(); }
+  /// Writes the basis (`Basis::write_basis()`); a float basis is written
+  /// widened to double.
+  void write_basis(std::ostream& os) const
+  {
+    m_stored_basis.visit([this, &os](const auto& H) { Basis::write_basis(os, m_basis, H); });
+  }
+  std::size_t number_of_frequencies() const { return static_cast<std::size_t>(m_stored_basis.cols()); }
   Eigen::RowVector3d smooth_rest(Eigen::Index i) const { return m_solver.smooth_rest().row(i); }
   /// The smooth deformed position of local vertex `i` (the smooth rest one
   /// before the first accepted result).
@@ -237,7 +254,7 @@ public:
   {
     if(!m_has_solution)
       return smooth_rest(i);
-    return (m_basis.basis.row(i) * m_coefficients).eval();
+    return (m_stored_basis.row(i) * m_coefficients).eval();
   }
 
 private:
@@ -347,7 +364,8 @@ private:
         result.row(static_cast<Eigen::Index>(i)) += correction.row(static_cast<Eigen::Index>(i));
   }
 
-  Basis_data m_basis;
+  Basis_data m_basis; // all but the basis itself, which is in m_stored_basis
+  Linear_algebra::Stored_basis m_stored_basis;
   Spectral_dual_laplacian_solver m_solver;
   Constraint_products m_constraint_products;
   Detail_transfer<SparseSPDSolverTraits> m_detail;

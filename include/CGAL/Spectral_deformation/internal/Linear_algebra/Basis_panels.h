@@ -151,24 +151,68 @@ void multiply_transpose(Eigen::Index n, Eigen::Index m, const BlockOf& block_of,
 
 } // namespace row_blocks
 
-/// The two products of the iteration read straight from a column-major
-/// basis H, which is not copied: the caller keeps H alive and unchanged.
-/// Blocks of a few hundred rows make each of the m column pieces of a block
-/// long enough for the hardware prefetcher, so that this layout streams
-/// about as fast as a copy stored by panels (`Basis_panels`), without the
-/// copy's 8nm bytes.
-class Basis_columns
+/// The basis H (n×m) of a deformation, kept by columns in double or, to
+/// halve its memory on large regions, in float, and the two products of the
+/// iteration, read straight from it. Blocks of a few hundred rows make each
+/// of the m column pieces of a block long enough for the hardware
+/// prefetcher, so that this layout streams about as fast as a copy stored
+/// by panels (`Basis_panels`), without the copy's bytes.
+///
+/// A float basis is not a rounded copy of a double one: everything the
+/// deformation derives from H (the reduced matrices, the smooth rest shape,
+/// the constrained rows) is computed from the stored values, widened to
+/// double, so the reduced system stays consistent at rest and the rounding
+/// only perturbs the subspace, by about 10⁻⁷ of each function.
+class Stored_basis
 {
 public:
   typedef row_blocks::Columns3 Columns3;
 
-  Basis_columns() = default;
-  explicit Basis_columns(const Eigen::MatrixXd& basis) { assign(basis); }
+  Stored_basis() = default;
 
-  void assign(const Eigen::MatrixXd& basis) { m_basis = &basis; }
+  /// Takes `basis`, kept in float when `single_precision`; `basis` is left
+  /// empty.
+  void assign(Eigen::MatrixXd&& basis, bool single_precision)
+  {
+    if(single_precision)
+    {
+      m_float = basis.cast<float>();
+      m_double = Eigen::MatrixXd();
+    }
+    else
+    {
+      m_double.swap(basis);
+      m_float = Eigen::MatrixXf();
+    }
+    basis = Eigen::MatrixXd();
+    m_single = single_precision;
+  }
 
-  Eigen::Index rows() const { return m_basis == nullptr ? 0 : m_basis->rows(); }
-  Eigen::Index cols() const { return m_basis == nullptr ? 0 : m_basis->cols(); }
+  bool empty() const { return rows() == 0; }
+  bool single_precision() const { return m_single; }
+  Eigen::Index rows() const { return m_single ? m_float.rows() : m_double.rows(); }
+  Eigen::Index cols() const { return m_single ? m_float.cols() : m_double.cols(); }
+  std::size_t bytes() const
+  {
+    return static_cast<std::size_t>(m_double.size()) * sizeof(double) +
+           static_cast<std::size_t>(m_float.size()) * sizeof(float);
+  }
+
+  /// Calls `visitor` with the stored matrix (`Eigen::MatrixXd` or
+  /// `Eigen::MatrixXf`) and returns what it returns.
+  template <class Visitor>
+  decltype(auto) visit(Visitor&& visitor) const
+  {
+    if(m_single)
+      return visitor(m_float);
+    return visitor(m_double);
+  }
+
+  /// Row `i` of H, in double.
+  Eigen::RowVectorXd row(Eigen::Index i) const
+  {
+    return visit([i](const auto& H) { return Eigen::RowVectorXd(H.row(i).template cast<double>()); });
+  }
 
   /// `shape` = H `coefficients` (n×3, or its transpose when `Shape` is
   /// `row_blocks::Rows3`), `coefficients` m×3; `shape` must not alias
@@ -176,23 +220,30 @@ public:
   template <typename Coefficients, typename Shape>
   void multiply(const Coefficients& coefficients, Shape& shape) const
   {
-    row_blocks::multiply<512>(rows(), cols(), block_of(), coefficients, shape);
+    visit([&](const auto& H) {
+      row_blocks::multiply<512>(H.rows(), H.cols(), block_of(H), coefficients, shape);
+    });
   }
 
   /// `result` = Hᵀ `values` (m×3), `values` n×3.
   template <typename Values>
   void multiply_transpose(const Values& values, Eigen::MatrixXd& result) const
   {
-    row_blocks::multiply_transpose<128>(rows(), cols(), block_of(), values, result);
+    visit([&](const auto& H) {
+      row_blocks::multiply_transpose<128>(H.rows(), H.cols(), block_of(H), values, result);
+    });
   }
 
 private:
-  auto block_of() const
+  template <typename Matrix>
+  static auto block_of(const Matrix& H)
   {
-    return [this](Eigen::Index start, Eigen::Index count) { return m_basis->middleRows(start, count); };
+    return [&H](Eigen::Index start, Eigen::Index count) { return H.middleRows(start, count); };
   }
 
-  const Eigen::MatrixXd* m_basis = nullptr;
+  Eigen::MatrixXd m_double;
+  Eigen::MatrixXf m_float;
+  bool m_single = false;
 };
 
 /// A copy of a basis H (n×m) for the same two products, cut into panels of
@@ -208,9 +259,11 @@ public:
 
   Basis_panels() = default;
 
-  explicit Basis_panels(const Eigen::MatrixXd& basis) { assign(basis); }
+  template <typename Matrix>
+  explicit Basis_panels(const Matrix& basis) { assign(basis); }
 
-  void assign(const Eigen::MatrixXd& basis)
+  template <typename Matrix>
+  void assign(const Matrix& basis)
   {
     m_rows = basis.rows();
     m_cols = basis.cols();

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 
 namespace CGAL {
 namespace Spectral_deformation {
@@ -27,14 +28,15 @@ namespace Linear_algebra {
 
 /// `result` = (A H)ᵀ (A H), the m × m Gram matrix of the operator A (rows ×
 /// n) in the basis H (n × m), with A given by `row_value(r, h)`, row `r` of A
-/// applied to one column `h` of H (a pointer to its n values). The rows of
+/// applied to one column `h` of H (a pointer to its n values, double or
+/// float as H stores them). The rows of
 /// A H are computed by blocks into a small buffer, each block added to a
 /// partial sum as a rank update; the rows are split into a fixed number of
 /// ranges, each summed by one thread and the ranges added in order, so that
 /// the result does not depend on the number of threads.
-template <class RowValue>
-void gram_in_basis(Eigen::Index rows, const RowValue& row_value, const Eigen::MatrixXd& H,
-                   Eigen::MatrixXd& result)
+template <class RowValue, typename Scalar>
+void gram_in_basis(Eigen::Index rows, const RowValue& row_value,
+                   const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& H, Eigen::MatrixXd& result)
 {
   constexpr int ranges = 8;
   constexpr Eigen::Index block_rows = 256;
@@ -55,7 +57,7 @@ void gram_in_basis(Eigen::Index rows, const RowValue& row_value, const Eigen::Ma
       const Eigen::Index count = (std::min)(block_rows, end - first);
       for(Eigen::Index j = 0; j < m; ++j)
       {
-        const double* h = H.col(j).data();
+        const Scalar* h = H.col(j).data();
         for(Eigen::Index r = 0; r < count; ++r)
           block(r, j) = row_value(first + r, h);
       }
@@ -70,14 +72,30 @@ void gram_in_basis(Eigen::Index rows, const RowValue& row_value, const Eigen::Ma
 
 /// `result` = Hᵀ A H for a sparse n × n matrix A and a basis H (n × m): A
 /// times blocks of columns of H (`for_each_column_block_product()`), each
-/// block multiplied by Hᵀ at once, so that A H is never stored.
-inline void sparse_in_basis(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& H,
-                            Eigen::MatrixXd& result)
+/// block multiplied by Hᵀ at once, so that A H is never stored. A float H
+/// is widened by blocks of rows: Eigen would widen all of it for the product.
+template <typename Scalar>
+void sparse_in_basis(const Eigen::SparseMatrix<double>& A,
+                     const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& H, Eigen::MatrixXd& result)
 {
   eigen_assert(A.rows() == H.rows());
   result.resize(H.cols(), H.cols());
   for_each_column_block_product(A, H, [&result, &H](Eigen::Index first, Eigen::Index width, const auto& buffer) {
-    result.middleCols(first, width).noalias() = H.transpose() * buffer.leftCols(width);
+    if constexpr(std::is_same<Scalar, double>::value)
+      result.middleCols(first, width).noalias() = H.transpose() * buffer.leftCols(width);
+    else
+    {
+      constexpr Eigen::Index block_rows = 4096;
+      Eigen::MatrixXd widened;
+      result.middleCols(first, width).setZero();
+      for(Eigen::Index start = 0; start < H.rows(); start += block_rows)
+      {
+        const Eigen::Index count = (std::min)(block_rows, H.rows() - start);
+        widened = H.middleRows(start, count).template cast<double>();
+        result.middleCols(first, width).noalias() +=
+            widened.transpose() * buffer.block(start, 0, count, width);
+      }
+    }
   });
 }
 

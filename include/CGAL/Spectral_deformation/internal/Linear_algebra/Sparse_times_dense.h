@@ -28,9 +28,8 @@ namespace Linear_algebra {
 /// (`consume` is called from them). Every entry sums the same terms in the
 /// same order as Eigen's product (the columns of A in ascending order), so
 /// the products do not depend on the number of threads.
-template <class Consume>
-void for_each_column_block_product(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& H,
-                                   const Consume& consume)
+template <class Matrix, class Consume>
+void for_each_column_block_product(const Eigen::SparseMatrix<double>& A, const Matrix& H, const Consume& consume)
 {
   constexpr Eigen::Index block_columns = 8;
   typedef Eigen::Matrix<double, Eigen::Dynamic, block_columns, Eigen::RowMajor> Row_block;
@@ -53,7 +52,7 @@ void for_each_column_block_product(const Eigen::SparseMatrix<double>& A, const E
       for(Eigen::Index k = 0; k < A.outerSize(); ++k)
       {
         for(Eigen::Index c = 0; c < width; ++c)
-          h[c] = H(k, first + c);
+          h[c] = static_cast<double>(H(k, first + c));
         for(Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it)
           buffer.row(it.index()) += it.value() * h;
       }

@@ -205,12 +205,13 @@ public:
   /// Row `r` of `laplacian_operator(weights)` applied to the vertex values
   /// `h` (one value per vertex), without forming the operator: the neighbour
   /// faces' means weighted by the row's weights, minus the face's own mean.
+  template <typename Scalar>
   double apply_row(const Eigen::Matrix<double, Eigen::Dynamic, 3>& weights, Eigen::Index r,
-                   const double* h) const
+                   const Scalar* h) const
   {
     const int f = m_row_faces[static_cast<std::size_t>(r)];
     const auto face_sum = [this, h](int g) {
-      return h[m_triangles(g, 0)] + h[m_triangles(g, 1)] + h[m_triangles(g, 2)];
+      return double(h[m_triangles(g, 0)]) + double(h[m_triangles(g, 1)]) + double(h[m_triangles(g, 2)]);
     };
     double sum = -face_sum(f);
     for(int j = 0; j < 3; ++j)
