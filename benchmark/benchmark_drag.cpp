@@ -55,6 +55,7 @@ struct Options
   bool skip_exact = false;                     // no variant with the exact basis
   bool skip_full = false;                      // no variant with the full iteration
   std::size_t basis_samples = 0;               // of the partition-of-unity basis (0: its default)
+  long long single_precision_threshold = -1;   // region vertices from which the basis is float (-1: the class's)
   int constraint_changes = 0;                  // new constraint sets after the path
   std::size_t changed_vertices = 1;            // handle vertices released and taken by each
   int drags = 30;
@@ -84,6 +85,8 @@ void print_usage(const char* program)
             << "  --skip-exact           only the variants of --approximate-basis\n"
             << "  --skip-full            no variant with the full iteration (patches only)\n"
             << "  --basis-samples k      samples of the partition-of-unity basis (default: its own)\n"
+            << "  --single-precision-threshold N  region vertices from which the basis is kept in\n"
+            << "                         float (default: the class's, 200000)\n"
             << "  --constraint-changes N after the path, N new constraint sets (handle vertices\n"
             << "                         released, then taken again), each timed (default 0)\n"
             << "  --changed-vertices K   the last K handle vertices change (default 1)\n"
@@ -131,6 +134,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--skip-exact") o.skip_exact = true;
     else if(a == "--skip-full") o.skip_full = true;
     else if(a == "--basis-samples") o.basis_samples = parse_list<std::size_t>(value()).at(0);
+    else if(a == "--single-precision-threshold") o.single_precision_threshold = std::stoll(value());
     else if(a == "--constraint-changes") o.constraint_changes = std::stoi(value());
     else if(a == "--changed-vertices") o.changed_vertices = std::stoul(value());
     else if(a == "--drags") o.drags = std::stoi(value());
@@ -213,7 +217,10 @@ Variant_result run_package(const Deformation_case& c, const Case_geometry& g, co
   result.name = std::string(approximate ? "spectral, partition-of-unity basis, " : "spectral, ") +
                 (approximate && o.basis_samples > 0 ? std::to_string(o.basis_samples) + " samples, " : "") +
                 (patches == 0 ? "full iteration" : std::to_string(patches) + " patches") +
-                (paper_energy ? ", dual Laplacian energy, one stage" : "");
+                (paper_energy ? ", dual Laplacian energy, one stage" : "") +
+                (o.single_precision_threshold >= 0
+                     ? ", float basis from " + std::to_string(o.single_precision_threshold) + " vertices"
+                     : "");
   reset_peak_resident_size();
   result.start_gib = double(proc_field_kib("/proc/self/status", "VmRSS")) / (1024.0 * 1024.0);
   Mesh mesh = c.mesh;
@@ -233,6 +240,8 @@ Variant_result run_package(const Deformation_case& c, const Case_geometry& g, co
     d.set_eigensolver_traits(eigensolver);
   }
   d.set_number_of_frequencies(o.frequencies);
+  if(o.single_precision_threshold >= 0)
+    d.set_single_precision_basis_threshold(static_cast<std::size_t>(o.single_precision_threshold));
   d.set_rotation_patches(patches);
   if(paper_energy)
   {

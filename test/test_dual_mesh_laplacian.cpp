@@ -192,8 +192,8 @@ TEST_CASE("non-manifold and inconsistently oriented faces are refused", "[dual][
 TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's products", "[dual]")
 {
   using namespace CGAL::Spectral_deformation::internal::Mesh;
-  using CGAL::Spectral_deformation::internal::Linear_algebra::Basis_columns;
   using CGAL::Spectral_deformation::internal::Linear_algebra::Basis_panels;
+  using CGAL::Spectral_deformation::internal::Linear_algebra::Stored_basis;
   // A plane with an open border: rows only where a face has three neighbours.
   const Soup soup = bumpy_plane(12);
   const Dual_mesh_operator op(dual_triangles(soup), static_cast<Eigen::Index>(soup.points.size()));
@@ -231,12 +231,30 @@ TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's
   // several whole blocks and a partial one.
   const Eigen::MatrixXd tall = Eigen::MatrixXd::Random(5 * 512 + 77, 23);
   const Positions tall_X = Positions::Random(tall.rows(), 3);
-  const Basis_columns columns(tall);
+  Stored_basis columns;
+  columns.assign(Eigen::MatrixXd(tall), false);
+  CHECK_FALSE(columns.single_precision());
+  CHECK(columns.bytes() == sizeof(double) * static_cast<std::size_t>(tall.size()));
   columns.multiply(C, shape);
   columns.multiply_transpose(tall_X, projected);
   CHECK(shape.rows() == tall.rows());
   CHECK((shape - tall * C).cwiseAbs().maxCoeff() < 1e-13);
   CHECK((projected - tall.transpose() * tall_X).cwiseAbs().maxCoeff() < 1e-11);
+  CHECK((columns.row(100) - tall.row(100)).cwiseAbs().maxCoeff() == 0.0);
+
+  // The same basis kept in float: the products of the rounded basis, in
+  // double arithmetic, in half the memory.
+  const Eigen::MatrixXd tall_rounded = tall.cast<float>().cast<double>();
+  Eigen::MatrixXd handed_over = tall;
+  columns.assign(std::move(handed_over), true);
+  CHECK(handed_over.size() == 0);
+  CHECK(columns.single_precision());
+  CHECK(columns.bytes() == sizeof(float) * static_cast<std::size_t>(tall.size()));
+  columns.multiply(C, shape);
+  columns.multiply_transpose(tall_X, projected);
+  CHECK((shape - tall_rounded * C).cwiseAbs().maxCoeff() < 1e-13);
+  CHECK((projected - tall_rounded.transpose() * tall_X).cwiseAbs().maxCoeff() < 1e-11);
+  CHECK((columns.row(100) - tall_rounded.row(100)).cwiseAbs().maxCoeff() == 0.0);
 
   // Float storage: exact products of the rounded basis, in double arithmetic.
   const Eigen::MatrixXd rounded = H.cast<float>().cast<double>();
@@ -325,4 +343,29 @@ TEST_CASE("the reduced matrices are formed in the basis without n-sized intermed
     CHECK((single_projection.array() == projection.array()).all());
 #endif
   }
+}
+
+TEST_CASE("the reduced matrices of a float basis are those of its values in double", "[dual]")
+{
+  namespace LA = CGAL::Spectral_deformation::internal::Linear_algebra;
+  using namespace CGAL::Spectral_deformation::internal::Mesh;
+  // More vertices than a block of the widened rows (4096), with a partial one.
+  const Soup soup = bumpy_plane(70);
+  const Dual_mesh_operator op(dual_triangles(soup), static_cast<Eigen::Index>(soup.points.size()));
+  const Eigen::Matrix<double, Eigen::Dynamic, 3> weights = op.evaluate(soup_positions(soup)).weights;
+  const Eigen::SparseMatrix<double> LF = op.laplacian_operator(weights);
+  const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(LF.transpose()) * LF;
+  REQUIRE(normal.rows() > 4096);
+  REQUIRE(normal.rows() % 4096 != 0);
+  const auto row_value = [&op, &weights](Eigen::Index r, const auto* h) { return op.apply_row(weights, r, h); };
+  const Eigen::MatrixXf H = Eigen::MatrixXf::Random(LF.cols(), 13);
+  const Eigen::MatrixXd widened = H.cast<double>();
+  Eigen::MatrixXd gram, projection, expected_gram, expected_projection;
+  LA::gram_in_basis(LF.rows(), row_value, H, gram);
+  LA::sparse_in_basis(normal, H, projection);
+  LA::gram_in_basis(LF.rows(), row_value, widened, expected_gram);
+  LA::sparse_in_basis(normal, widened, expected_projection);
+  const double scale = expected_gram.cwiseAbs().maxCoeff();
+  CHECK((gram - expected_gram).cwiseAbs().maxCoeff() < 1e-12 * scale);
+  CHECK((projection - expected_projection).cwiseAbs().maxCoeff() < 1e-12 * scale);
 }
