@@ -120,6 +120,7 @@ struct Deformation_settings
   std::string basis = "approximate";
   double constraint_weight = -1; // negative: the library's default
   bool single_precision_basis = false;
+  long long single_precision_basis_threshold = -1; // negative: the library's default
   long long rotation_patches = -1; // negative: the library's default
   double stage_angle = -1;         // degrees; negative: the library's default
   bool volume_preservation = false;
@@ -370,6 +371,9 @@ private:
         if(m_settings.constraint_weight >= 0)
           d.set_constraint_weight(m_settings.constraint_weight);
         d.set_single_precision_basis(m_settings.single_precision_basis);
+        if(m_settings.single_precision_basis_threshold >= 0)
+          d.set_single_precision_basis_threshold(
+              static_cast<std::size_t>(m_settings.single_precision_basis_threshold));
         if(m_settings.rotation_patches >= 0)
           d.set_rotation_patches(static_cast<std::size_t>(m_settings.rotation_patches));
         if(m_settings.stage_angle >= 0)

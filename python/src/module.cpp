@@ -112,6 +112,9 @@ encloses (when the region is cut out of a closed surface).
 basis: 'approximate' (default: eigenvectors approximated in a space of sampled
 functions on large regions, several times faster, exact on small ones) or
 'exact' (the eigenvectors at every size).
+single_precision_basis_threshold: regions of at least this many vertices
+keep their basis in float, half the memory (None: the library's default,
+200000; 0: always).
 basis_cache: a file to read the basis from, or to write it to once computed.
 progress: a callable receiving a dict after each step of the eigensolver.
 
@@ -124,7 +127,8 @@ Raises ValueError for every input the library rejects, with its message.
                            const std::string& energy, const py::object& constraint_weight, bool single_precision_basis,
                            const py::object& rotation_patches, const py::object& stage_angle,
                            bool volume_preservation, const std::string& basis,
-                           const py::object& basis_cache, const py::object& progress) {
+                           const py::object& basis_cache, const py::object& progress,
+                           const py::object& single_precision_basis_threshold) {
              Deformation_settings settings;
              if(m < 1)
                throw py::value_error("m (the number of frequencies) must be positive, not " + std::to_string(m));
@@ -141,6 +145,14 @@ Raises ValueError for every input the library rejects, with its message.
                settings.constraint_weight = w;
              }
              settings.single_precision_basis = single_precision_basis;
+             if(!single_precision_basis_threshold.is_none())
+             {
+               const long long vertices = single_precision_basis_threshold.cast<long long>();
+               if(vertices < 0)
+                 throw py::value_error("single_precision_basis_threshold must be 0 or positive, not " +
+                                       std::to_string(vertices));
+               settings.single_precision_basis_threshold = vertices;
+             }
              if(!rotation_patches.is_none())
              {
                const long long k = rotation_patches.cast<long long>();
@@ -172,7 +184,7 @@ Raises ValueError for every input the library rejects, with its message.
            py::arg("single_precision_basis") = false, py::arg("rotation_patches") = py::none(),
            py::arg("stage_angle") = py::none(), py::arg("volume_preservation") = false,
            py::arg("basis") = "approximate", py::arg("basis_cache") = py::none(),
-           py::arg("progress") = py::none())
+           py::arg("progress") = py::none(), py::arg("single_precision_basis_threshold") = py::none())
       .def_property_readonly("number_of_vertices", &Deformation_session::number_of_vertices,
                              "The number of vertices n.")
       .def_property_readonly("handles", &Deformation_session::handles,

@@ -42,6 +42,7 @@ class Deformation:
         basis: str = "approximate",
         basis_cache: Optional[PathLike] = None,
         progress: Optional[ProgressCallback] = None,
+        single_precision_basis_threshold: Optional[int] = None,
     ) -> None: ...
 
     @property

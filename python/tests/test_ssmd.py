@@ -381,6 +381,25 @@ def test_approximate_and_exact_basis():
                        lambda: ssmd.Deformation(V, F, fixed=fixed, handles=handles, basis="fast"))
 
 
+def test_basis_kept_in_float():
+    V, F = icosphere(4)
+    handles = np.flatnonzero(V[:, 2] > 0.8)
+    fixed = np.flatnonzero(V[:, 2] < -0.8)
+    targets = V[handles] + np.array([0.3, 0.0, 0.2])
+    results = []
+    for threshold in (None, 0):
+        d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=20,
+                             single_precision_basis_threshold=threshold)
+        d.set_targets(targets)
+        results.append(d.deform())
+    # 2,562 vertices: double by default; every basis in float from 0 on.
+    difference = np.max(np.linalg.norm(results[0] - results[1], axis=1))
+    assert 0 < difference < 1e-5 * np.ptp(V, axis=0).max()
+    expect_value_error("single_precision_basis_threshold must be 0 or positive",
+                       lambda: ssmd.Deformation(V, F, fixed=fixed, handles=handles,
+                                                single_precision_basis_threshold=-1))
+
+
 def test_gil_is_released_during_the_eigensolve():
     V, F = icosphere(5)   # 10,242 vertices
     counter = [0]
