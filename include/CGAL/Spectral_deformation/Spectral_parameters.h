@@ -123,9 +123,10 @@ public:
   /// Regions of at least `vertices` vertices keep their basis in float: 4 n m
   /// bytes instead of 8 n m (0.6 GiB instead of 1.2 GiB for 1.6 million
   /// vertices and m = 100). Everything the deformation derives from the basis
-  /// is computed from the stored values in double, so results move by about
-  /// \f$ 10^{-7} \f$ of the bounding-box diagonal and the deformation
-  /// measures of the manual's quality benchmark do not change. 0 keeps every
+  /// is computed from the stored values in double, so results move by
+  /// \f$ 10^{-8} \f$ to \f$ 10^{-5} \f$ of the bounding-box diagonal and
+  /// the deformation measures of the manual's quality benchmark do not
+  /// change (see the manual, *Memory*). 0 keeps every
   /// basis in float, `std::numeric_limits<std::size_t>::max()` none. Takes
   /// effect when a basis is next computed or loaded; `save_basis()` writes a
   /// float basis widened to double.

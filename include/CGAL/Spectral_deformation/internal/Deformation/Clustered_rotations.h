@@ -238,10 +238,10 @@ inline std::vector<int> cluster_vertices(const Dual_mesh_operator& dual, const P
 class Clustered_rotation_rhs
 {
 public:
-  /// `basis` n×m (a dense matrix of double or float), `dual` the dual mesh of the region, `weights` and
-  /// `coordinates` the rest dual coordinates (rows of `dual`), `smooth_rest`
-  /// the rest positions of the iteration, `patch_of_row` from
-  /// `cluster_dual_rows()`.
+  /// `basis` n×m (a dense matrix of double or float), `dual` the dual mesh
+  /// of the region, `weights` and `coordinates` the rest dual coordinates
+  /// (rows of `dual`), `smooth_rest` the rest positions of the iteration,
+  /// `patch_of_row` from `cluster_dual_rows()`.
   template <class Basis>
   void initialize(const Basis& basis, const Dual_mesh_operator& dual,
                   const Eigen::Matrix<double, Eigen::Dynamic, 3>& weights, const Positions& coordinates,
