@@ -57,6 +57,18 @@ py::tuple manifold_harmonics(const py::handle& vertices, const py::handle& faces
   return py::make_tuple(eigenvalues, functions, mass);
 }
 
+// An optional count given in Python: -1 for None (the library's default),
+// ValueError "`requirement`, not k" for a negative k.
+long long optional_count(const py::object& value, const std::string& requirement)
+{
+  if(value.is_none())
+    return -1;
+  const long long count = value.cast<long long>();
+  if(count < 0)
+    throw py::value_error(requirement + ", not " + std::to_string(count));
+  return count;
+}
+
 } // namespace
 
 PYBIND11_MODULE(_ssmd, m)
@@ -145,22 +157,10 @@ Raises ValueError for every input the library rejects, with its message.
                settings.constraint_weight = w;
              }
              settings.single_precision_basis = single_precision_basis;
-             if(!single_precision_basis_threshold.is_none())
-             {
-               const long long vertices = single_precision_basis_threshold.cast<long long>();
-               if(vertices < 0)
-                 throw py::value_error("single_precision_basis_threshold must be 0 or positive, not " +
-                                       std::to_string(vertices));
-               settings.single_precision_basis_threshold = vertices;
-             }
-             if(!rotation_patches.is_none())
-             {
-               const long long k = rotation_patches.cast<long long>();
-               if(k < 0)
-                 throw py::value_error("rotation_patches must be 0 (the full iteration) or positive, not " +
-                                       std::to_string(k));
-               settings.rotation_patches = k;
-             }
+             settings.single_precision_basis_threshold = optional_count(
+                 single_precision_basis_threshold, "single_precision_basis_threshold must be 0 or positive");
+             settings.rotation_patches =
+                 optional_count(rotation_patches, "rotation_patches must be 0 (the full iteration) or positive");
              if(!stage_angle.is_none())
              {
                const double degrees = stage_angle.cast<double>();

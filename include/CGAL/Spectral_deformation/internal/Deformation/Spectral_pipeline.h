@@ -254,7 +254,9 @@ public:
   {
     if(!m_has_solution)
       return smooth_rest(i);
-    return (m_stored_basis.row(i) * m_coefficients).eval();
+    return m_stored_basis.visit([this, i](const auto& H) {
+      return Eigen::RowVector3d(H.row(i).template cast<double>() * m_coefficients);
+    });
   }
 
 private:
