@@ -331,6 +331,7 @@ TEST_CASE("the reduced matrices are formed in the basis without n-sized intermed
     CHECK((gram - expected_gram).cwiseAbs().maxCoeff() < 1e-12 * scale);
     CHECK((projection - expected_projection).cwiseAbs().maxCoeff() < 1e-12 * scale);
     CHECK((gram.array() == gram.transpose().array()).all());
+    CHECK((projection.array() == projection.transpose().array()).all());
 #ifdef _OPENMP
     // The same bits on one thread.
     const int threads = omp_get_max_threads();

@@ -133,34 +133,70 @@ inline int grow_patches(const Dual_mesh_operator& dual, const Positions& centroi
   return patches;
 }
 
-/// Groups the rows of `dual` (the dual vertices with three neighbours) into
-/// about `count` patches of neighbouring faces: seeds spread by farthest
-/// point sampling of the face centroids (on a regular subsample of them),
-/// then grown over the dual graph (`grow_patches()`), so that a patch never jumps
-/// across a gap between two parts of the surface. A part of the surface that
-/// no seed reaches is a patch of its own. Returns the patch of each row,
-/// numbered from 0 without gaps; `count` at least the number of rows gives
-/// every row its own patch.
-inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const Positions& centroids,
-                                          std::size_t count)
+/// The faces of `dual` grouped into about `count` patches of neighbouring
+/// faces: seeds spread by farthest point sampling of the face `centroids`
+/// (on a regular subsample of them), then grown over the dual graph
+/// (`grow_patches()`), so that a patch never jumps across a gap between two
+/// parts of the surface. A part of the surface that no seed reaches is a
+/// patch of its own. The grouping is made at the first call of
+/// `of_face()` and kept: the dual rows and the vertices are grouped from
+/// the same patches of faces (`cluster_dual_rows()`, `cluster_vertices()`).
+class Face_patches
 {
-  const std::vector<int>& row_faces = dual.row_faces();
+public:
+  Face_patches(const Dual_mesh_operator& dual, const Positions& centroids, std::size_t count)
+      : m_dual(&dual), m_centroids(&centroids), m_count((std::max<std::size_t>)(count, 1))
+  {}
+
+  const Dual_mesh_operator& dual() const { return *m_dual; }
+  /// The number of patches asked for (at least 1).
+  std::size_t requested() const { return m_count; }
+
+  /// The patch of every face, numbered from 0 (not every number need hold a row).
+  const std::vector<int>& of_face() const
+  {
+    if(m_patch_of_face.empty() && m_dual->number_of_faces() > 0)
+    {
+      const std::vector<int> seeds =
+          farthest_point_seeds(*m_centroids, static_cast<std::size_t>(m_dual->number_of_faces()), m_count);
+      m_patches = grow_patches(*m_dual, *m_centroids, seeds, m_patch_of_face);
+    }
+    return m_patch_of_face;
+  }
+
+  /// The number of patches of `of_face()`.
+  int size() const
+  {
+    of_face();
+    return m_patches;
+  }
+
+private:
+  const Dual_mesh_operator* m_dual;
+  const Positions* m_centroids;
+  std::size_t m_count;
+  mutable std::vector<int> m_patch_of_face;
+  mutable int m_patches = 0;
+};
+
+/// Groups the rows of `dual` (the dual vertices with three neighbours) into
+/// the patches of their faces (`Face_patches`). Returns the patch of each
+/// row, numbered from 0 without gaps; at least as many patches requested as
+/// rows give every row its own patch.
+inline std::vector<int> cluster_dual_rows(const Face_patches& patches)
+{
+  const std::vector<int>& row_faces = patches.dual().row_faces();
   const std::size_t rows = row_faces.size();
   std::vector<int> result(rows, 0);
-  if(count >= rows)
+  if(patches.requested() >= rows)
   {
     for(std::size_t r = 0; r < rows; ++r)
       result[r] = static_cast<int>(r);
     return result;
   }
-  count = (std::max<std::size_t>)(count, 1);
-  const std::vector<int> seeds =
-      farthest_point_seeds(centroids, static_cast<std::size_t>(dual.number_of_faces()), count);
-  std::vector<int> patch_of_face;
-  const int patches = grow_patches(dual, centroids, seeds, patch_of_face);
-
+  const std::vector<int>& patch_of_face = patches.of_face();
   // Only the rows carry rotations: number the patches that hold a row.
-  std::vector<int> renumbered(static_cast<std::size_t>(patches), -1);
+  std::vector<int> renumbered(static_cast<std::size_t>(patches.size()), -1);
   int used = 0;
   for(std::size_t r = 0; r < rows; ++r)
   {
@@ -172,17 +208,24 @@ inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const 
   return result;
 }
 
-/// Groups the `n` vertices of the faces of `dual` into about `count`
-/// patches as `cluster_dual_rows()` groups its rows: the faces are grouped
-/// and every vertex joins the patch of one of its faces. Returns the patch
-/// of each vertex, numbered from 0 without gaps (-1 for a vertex of no
-/// face); `count` at least `n` gives every vertex its own patch.
-inline std::vector<int> cluster_vertices(const Dual_mesh_operator& dual, const Positions& centroids,
-                                         Eigen::Index n, std::size_t count)
+/// `cluster_dual_rows()` with about `count` patches grown over the faces of
+/// `dual` from their `centroids`.
+inline std::vector<int> cluster_dual_rows(const Dual_mesh_operator& dual, const Positions& centroids,
+                                          std::size_t count)
+{
+  return cluster_dual_rows(Face_patches(dual, centroids, count));
+}
+
+/// Groups the `n` vertices of the faces of `dual` into the patches of their
+/// faces (`Face_patches`): every vertex joins the patch of one of its
+/// faces. Returns the patch of each vertex, numbered from 0 without gaps (-1
+/// for a vertex of no face); at least `n` patches requested give every
+/// vertex its own patch.
+inline std::vector<int> cluster_vertices(const Face_patches& patches, Eigen::Index n)
 {
   std::vector<int> result(static_cast<std::size_t>(n), -1);
-  const Triangles& triangles = dual.triangles();
-  if(count >= static_cast<std::size_t>(n))
+  const Triangles& triangles = patches.dual().triangles();
+  if(patches.requested() >= static_cast<std::size_t>(n))
   {
     for(Eigen::Index f = 0; f < triangles.rows(); ++f)
       for(int k = 0; k < 3; ++k)
@@ -190,11 +233,7 @@ inline std::vector<int> cluster_vertices(const Dual_mesh_operator& dual, const P
   }
   else
   {
-    count = (std::max<std::size_t>)(count, 1);
-    const std::vector<int> seeds =
-        farthest_point_seeds(centroids, static_cast<std::size_t>(dual.number_of_faces()), count);
-    std::vector<int> patch_of_face;
-    grow_patches(dual, centroids, seeds, patch_of_face);
+    const std::vector<int>& patch_of_face = patches.of_face();
     for(Eigen::Index f = 0; f < triangles.rows(); ++f)
       for(int k = 0; k < 3; ++k)
         result[static_cast<std::size_t>(triangles(f, k))] = patch_of_face[static_cast<std::size_t>(f)];
@@ -211,6 +250,44 @@ inline std::vector<int> cluster_vertices(const Dual_mesh_operator& dual, const P
     }
   return result;
 }
+
+/// `cluster_vertices()` with about `count` patches grown over the faces of
+/// `dual` from their `centroids`.
+inline std::vector<int> cluster_vertices(const Dual_mesh_operator& dual, const Positions& centroids,
+                                         Eigen::Index n, std::size_t count)
+{
+  return cluster_vertices(Face_patches(dual, centroids, count), n);
+}
+
+/// The rows of a column-major basis (n × m, double or float) in increasing
+/// order, widened to double: blocks of consecutive rows are copied to a
+/// row-major buffer, so that reading a row costs one pass over short
+/// contiguous pieces of the columns instead of m reads n entries apart.
+template <class Basis>
+class Sequential_basis_rows
+{
+public:
+  explicit Sequential_basis_rows(const Basis& basis) : m_basis(&basis) {}
+
+  /// Row `i` (m entries), valid until the next call. Rows read in
+  /// increasing order cost one copy of their block each.
+  const double* row(Eigen::Index i)
+  {
+    if(i < m_first || i >= m_first + m_block.rows())
+    {
+      const Eigen::Index count = (std::min)(block_rows, m_basis->rows() - i);
+      m_block = m_basis->middleRows(i, count).template cast<double>();
+      m_first = i;
+    }
+    return m_block.row(i - m_first).data();
+  }
+
+private:
+  static constexpr Eigen::Index block_rows = 64;
+  const Basis* m_basis;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> m_block;
+  Eigen::Index m_first = 0;
+};
 
 /// The right-hand side of the reduced dual Laplacian iteration with one
 /// rotation per patch of dual vertices instead of one per dual vertex.
@@ -310,7 +387,7 @@ public:
         Eigen::RowVector3d half, absolute;
       };
       std::vector<Load> loads;
-      Eigen::VectorXd h(m);
+      Sequential_basis_rows<Basis> basis_rows(basis);
       const std::ptrdiff_t first = n * thread / threads, last = n * (thread + 1) / threads;
       for(std::ptrdiff_t i = first; i < last; ++i)
       {
@@ -337,8 +414,7 @@ public:
           add(own, 0.5 * w * edge, std::abs(w) * edge);
           add(patch_of_vertex[static_cast<std::size_t>(j)], 0.5 * w * edge, std::abs(w) * edge);
         }
-        for(Eigen::Index k = 0; k < m; ++k)
-          h[k] = basis(i, k);
+        const Eigen::Map<const Eigen::VectorXd> h(basis_rows.row(i), m);
         for(const Load& load : loads)
         {
           my_K.middleCols<3>(3 * load.patch).noalias() += h * load.half;
@@ -512,14 +588,13 @@ private:
           by_vertex[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.vertex)]++)] = &c;
     }
     const Eigen::Index m = basis.cols();
-    Eigen::VectorXd h(m);
+    Sequential_basis_rows<Basis> basis_rows(basis);
     for(Eigen::Index v = 0; v < n; ++v)
     {
       const int begin = first[static_cast<std::size_t>(v)], end = first[static_cast<std::size_t>(v) + 1];
       if(begin == end)
         continue;
-      for(Eigen::Index k = 0; k < m; ++k)
-        h[k] = basis(v, k);
+      const Eigen::Map<const Eigen::VectorXd> h(basis_rows.row(v), m);
       for(int k = begin; k < end; ++k)
       {
         const Contribution& c = *by_vertex[static_cast<std::size_t>(k)];

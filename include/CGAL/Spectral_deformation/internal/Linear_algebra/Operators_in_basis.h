@@ -70,33 +70,36 @@ void gram_in_basis(Eigen::Index rows, const RowValue& row_value,
   result = result.selfadjointView<Eigen::Lower>();
 }
 
-/// `result` = Hᵀ A H for a sparse n × n matrix A and a basis H (n × m): A
-/// times blocks of columns of H (`for_each_column_block_product()`), each
-/// block multiplied by Hᵀ at once, so that A H is never stored. A float H
-/// is widened by blocks of rows: Eigen would widen all of it for the product.
+/// `result` = Hᵀ A H for a symmetric sparse n × n matrix A and a basis H
+/// (n × m): A times blocks of columns of H (`for_each_column_block_product()`),
+/// each block multiplied by the columns of Hᵀ from its first one on, so that
+/// A H is never stored and only the lower triangle is summed (the result is
+/// symmetric to the last bit). A float H is widened by blocks of rows: Eigen
+/// would widen all of it for the product.
 template <typename Scalar>
 void sparse_in_basis(const Eigen::SparseMatrix<double>& A,
                      const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& H, Eigen::MatrixXd& result)
 {
   eigen_assert(A.rows() == H.rows());
-  result.resize(H.cols(), H.cols());
-  for_each_column_block_product(A, H, [&result, &H](Eigen::Index first, Eigen::Index width, const auto& buffer) {
+  const Eigen::Index m = H.cols();
+  result.setZero(m, m);
+  for_each_column_block_product(A, H, [&result, &H, m](Eigen::Index first, Eigen::Index width, const auto& buffer) {
+    auto lower = result.block(first, first, m - first, width);
     if constexpr(std::is_same<Scalar, double>::value)
-      result.middleCols(first, width).noalias() = H.transpose() * buffer.leftCols(width);
+      lower.noalias() = H.rightCols(m - first).transpose() * buffer.leftCols(width);
     else
     {
       constexpr Eigen::Index block_rows = 4096;
       Eigen::MatrixXd widened;
-      result.middleCols(first, width).setZero();
       for(Eigen::Index start = 0; start < H.rows(); start += block_rows)
       {
         const Eigen::Index count = (std::min)(block_rows, H.rows() - start);
-        widened = H.middleRows(start, count).template cast<double>();
-        result.middleCols(first, width).noalias() +=
-            widened.transpose() * buffer.block(start, 0, count, width);
+        widened = H.block(start, first, count, m - first).template cast<double>();
+        lower.noalias() += widened.transpose() * buffer.block(start, 0, count, width);
       }
     }
   });
+  result = result.selfadjointView<Eigen::Lower>();
 }
 
 } // namespace Linear_algebra
