@@ -404,6 +404,9 @@ private:
       deformation->set_number_of_frequencies(m_options.frequencies);
       if(m_options.rotation_patches >= 0)
         deformation->set_rotation_patches(static_cast<std::size_t>(m_options.rotation_patches));
+      if(m_options.single_precision_threshold >= 0)
+        deformation->set_single_precision_basis_threshold(
+            static_cast<std::size_t>(m_options.single_precision_threshold));
       if(m_options.stage_angle >= 0)
         deformation->set_stage_angle(m_options.stage_angle);
       deformation->set_volume_preservation(m_options.volume_preservation);
@@ -587,6 +590,8 @@ private:
       }
       m_report.basis_origin = origin.str();
     }
+    if(m_report.preprocess.single_precision_basis)
+      m_report.basis_origin += ", kept in float";
     m_info << "basis: " << m_report.basis_origin << "\n";
 
     try

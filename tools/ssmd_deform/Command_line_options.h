@@ -46,6 +46,7 @@ struct Command_line_options
   bool approximate_basis = true; // CGAL::Partition_of_unity_eigensolver_traits; false: block Lanczos
   std::size_t frequencies = 100;
   long long rotation_patches = -1; // negative: the library's default
+  long long single_precision_threshold = -1; // negative: the library's default
   double stage_angle = -1;         // degrees; negative: the library's default
   bool volume_preservation = false; // the detail transfer keeps the enclosed volume
   unsigned int iterations = 10;
@@ -291,6 +292,14 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
                  "per dual vertex, the full iteration).")
       ->option_text("K")
       ->check(internal::expects("--rotation-patches", "an integer of at least 0", [](const std::string& v) {
+        return internal::is_count_at_least(v, 0, static_cast<std::size_t>(-1));
+      }));
+  app.add_option("--single-precision-threshold", options.single_precision_threshold,
+                 "the number of region vertices from which the basis is kept in float, half the "
+                 "memory (default: the library's, 200000; 0: always).")
+      ->option_text("N")
+      ->check(internal::expects("--single-precision-threshold", "an integer of at least 0",
+                                [](const std::string& v) {
         return internal::is_count_at_least(v, 0, static_cast<std::size_t>(-1));
       }));
   app.add_option("--stage-angle", options.stage_angle,
