@@ -83,6 +83,7 @@ inline py::dict to_dict(const CGAL::Spectral_preprocess_report& r)
   d["message"] = r.message;
   d["region_rebuilt"] = r.region_rebuilt;
   d["basis_computed"] = r.basis_computed;
+  d["single_precision_basis"] = r.single_precision_basis;
   d["number_of_region_vertices"] = r.number_of_region_vertices;
   d["number_of_frequencies"] = r.number_of_frequencies;
   d["number_of_constrained_vertices"] = r.number_of_constrained_vertices;

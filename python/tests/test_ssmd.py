@@ -390,6 +390,7 @@ def test_basis_kept_in_float():
     for threshold in (None, 0):
         d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=20,
                              single_precision_basis_threshold=threshold)
+        assert d.preprocess_report["single_precision_basis"] == (threshold == 0)
         d.set_targets(targets)
         results.append(d.deform())
     # 2,562 vertices: double by default; every basis in float from 0 on.
