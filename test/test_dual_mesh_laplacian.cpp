@@ -369,4 +369,5 @@ TEST_CASE("the reduced matrices of a float basis are those of its values in doub
   const double scale = expected_gram.cwiseAbs().maxCoeff();
   CHECK((gram - expected_gram).cwiseAbs().maxCoeff() < 1e-12 * scale);
   CHECK((projection - expected_projection).cwiseAbs().maxCoeff() < 1e-12 * scale);
+  CHECK((projection.array() == projection.transpose().array()).all());
 }

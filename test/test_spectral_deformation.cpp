@@ -21,6 +21,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -1095,6 +1096,59 @@ TEST_CASE("rotation patches are connected, cover every dual vertex, one surface 
         }
     }
     CHECK(components == patches);
+  }
+}
+
+TEST_CASE("the dual rows and the vertices are grouped from one grouping of the faces", "[patches]")
+{
+  namespace D = internal::Deformation;
+  const Soup soup = two_spheres(3);
+  const internal::Mesh::Triangle_arrays arrays =
+      internal::Mesh::extract_triangle_arrays(to_mesh<Surface_mesh>(soup), CGAL::parameters::default_values());
+  const internal::Mesh::Dual_mesh_operator dual(arrays.triangles, arrays.number_of_vertices());
+  const internal::Mesh::Positions centroids = dual.centroids(arrays.positions);
+  const std::vector<int>& row_faces = dual.row_faces();
+  const Eigen::Index n = arrays.number_of_vertices();
+  for(std::size_t count : {1, 7, 40, 300})
+  {
+    INFO(count << " patches requested");
+    // Either order of the two groupings, and a fresh grouping for each, agree.
+    const D::Face_patches rows_first(dual, centroids, count), vertices_first(dual, centroids, count);
+    const std::vector<int> row_patch = D::cluster_dual_rows(rows_first);
+    const std::vector<int> vertex_patch = D::cluster_vertices(rows_first, n);
+    CHECK(D::cluster_vertices(vertices_first, n) == vertex_patch);
+    CHECK(D::cluster_dual_rows(vertices_first) == row_patch);
+    CHECK(D::cluster_dual_rows(dual, centroids, count) == row_patch);
+    CHECK(D::cluster_vertices(dual, centroids, n, count) == vertex_patch);
+    // Both are renumberings of the faces' patches: a row takes the patch of
+    // its face, a vertex the patch of one of its faces.
+    const std::vector<int>& face_patch = rows_first.of_face();
+    std::map<int, int> row_id;
+    for(std::size_t r = 0; r < row_faces.size(); ++r)
+    {
+      const auto inserted = row_id.emplace(face_patch[static_cast<std::size_t>(row_faces[r])], row_patch[r]);
+      CHECK(inserted.first->second == row_patch[r]);
+    }
+    std::set<int> row_ids;
+    for(const auto& entry : row_id)
+      row_ids.insert(entry.second);
+    CHECK(row_ids.size() == row_id.size()); // one row patch per patch of faces
+    // A vertex takes the patch of the last face that holds it.
+    std::vector<int> last_face_patch(static_cast<std::size_t>(n), -1);
+    for(Eigen::Index f = 0; f < arrays.triangles.rows(); ++f)
+      for(int k = 0; k < 3; ++k)
+        last_face_patch[static_cast<std::size_t>(arrays.triangles(f, k))] = face_patch[static_cast<std::size_t>(f)];
+    std::map<int, int> vertex_id;
+    for(Eigen::Index v = 0; v < n; ++v)
+    {
+      const auto inserted = vertex_id.emplace(last_face_patch[static_cast<std::size_t>(v)],
+                                              vertex_patch[static_cast<std::size_t>(v)]);
+      CHECK(inserted.first->second == vertex_patch[static_cast<std::size_t>(v)]);
+    }
+    std::set<int> vertex_ids;
+    for(const auto& entry : vertex_id)
+      vertex_ids.insert(entry.second);
+    CHECK(vertex_ids.size() == vertex_id.size()); // one vertex patch per patch of faces
   }
 }
 

@@ -564,10 +564,11 @@ private:
     m_report.dense_eigensolve = progress_bar.dense();
     m_report.approximate_eigensolve = progress_bar.approximate();
 
+    const std::string kept_in_float = m_report.preprocess.single_precision_basis ? ", kept in float" : "";
     if(!uses_basis)
       m_report.basis_origin = "not used by the spatial algorithm";
     else if(loaded)
-      m_report.basis_origin = "loaded from the cache " + cache_file + " (eigensolve skipped)";
+      m_report.basis_origin = "loaded from the cache " + cache_file + " (eigensolve skipped)" + kept_in_float;
     else
     {
       std::ostringstream origin;
@@ -575,7 +576,7 @@ private:
              << (m_report.approximate_eigensolve ? std::string("approximate")
                  : m_report.dense_eigensolve ? std::string("dense solver")
                                              : std::to_string(m_report.eigensolver_solves) + " Lanczos solves")
-             << ")";
+             << ")" << kept_in_float;
       if constexpr(uses_basis)
       {
         if(use_cache)
@@ -590,8 +591,6 @@ private:
       }
       m_report.basis_origin = origin.str();
     }
-    if(m_report.preprocess.single_precision_basis)
-      m_report.basis_origin += ", kept in float";
     m_info << "basis: " << m_report.basis_origin << "\n";
 
     try

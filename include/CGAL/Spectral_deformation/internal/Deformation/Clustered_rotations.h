@@ -139,15 +139,19 @@ inline int grow_patches(const Dual_mesh_operator& dual, const Positions& centroi
 /// (`grow_patches()`), so that a patch never jumps across a gap between two
 /// parts of the surface. A part of the surface that no seed reaches is a
 /// patch of its own. The grouping is made at the first call of
-/// `of_face()` and kept: the dual rows and the vertices are grouped from
+/// `of_face()`, so that a region with no more rows or vertices than patches
+/// grows none, and kept: the dual rows and the vertices are grouped from
 /// the same patches of faces (`cluster_dual_rows()`, `cluster_vertices()`).
+/// Not for concurrent use; `dual` and `centroids` must outlive the object.
 class Face_patches
 {
 public:
   Face_patches(const Dual_mesh_operator& dual, const Positions& centroids, std::size_t count)
       : m_dual(&dual), m_centroids(&centroids), m_count((std::max<std::size_t>)(count, 1))
   {}
+  Face_patches(const Dual_mesh_operator&, Positions&&, std::size_t) = delete;
 
+  /// The dual mesh whose faces are grouped.
   const Dual_mesh_operator& dual() const { return *m_dual; }
   /// The number of patches asked for (at least 1).
   std::size_t requested() const { return m_count; }
@@ -159,7 +163,11 @@ public:
     {
       const std::vector<int> seeds =
           farthest_point_seeds(*m_centroids, static_cast<std::size_t>(m_dual->number_of_faces()), m_count);
-      m_patches = grow_patches(*m_dual, *m_centroids, seeds, m_patch_of_face);
+      // Kept only once complete: a grouping cut short by an exception is not reused.
+      std::vector<int> patch_of_face;
+      const int patches = grow_patches(*m_dual, *m_centroids, seeds, patch_of_face);
+      m_patch_of_face.swap(patch_of_face);
+      m_patches = patches;
     }
     return m_patch_of_face;
   }
@@ -273,6 +281,7 @@ public:
   /// increasing order cost one copy of their block each.
   const double* row(Eigen::Index i)
   {
+    eigen_assert(i >= 0 && i < m_basis->rows());
     if(i < m_first || i >= m_first + m_block.rows())
     {
       const Eigen::Index count = (std::min)(block_rows, m_basis->rows() - i);

@@ -331,24 +331,28 @@ private:
     m_arap_patches = Clustered_rotation_rhs();
     if(m_patch_count == 0)
       return;
-    // Both groupings come from one grouping of the faces.
-    const Positions centroids = m_dual.centroids(m_smooth_rest);
-    const Face_patches face_patches(m_dual, centroids, m_patch_count);
-    if(uses_arap_energy())
+    // Both groupings come from one grouping of the faces, whose centroids
+    // are freed before the products are made.
+    std::vector<int> patch_of_vertex, patch_of_row;
     {
-      const std::vector<int> patch_of_vertex = cluster_vertices(face_patches, m_smooth_rest.rows());
+      const Positions centroids = m_dual.centroids(m_smooth_rest);
+      const Face_patches face_patches(m_dual, centroids, m_patch_count);
+      if(uses_arap_energy())
+        patch_of_vertex = cluster_vertices(face_patches, m_smooth_rest.rows());
+      if(uses_dual_energy())
+        patch_of_row = cluster_dual_rows(face_patches);
+    }
+    if(uses_arap_energy())
       m_basis->visit([this, &patch_of_vertex](const auto& H) {
         m_arap_patches.initialize_arap(H, m_rotated_edges.rotation_field().adjacency(), m_smooth_rest,
                                        patch_of_vertex);
       });
-    }
-    if(!uses_dual_energy())
-      return;
-    const std::vector<int> patch_of_row = cluster_dual_rows(face_patches);
-    m_basis->visit([this, &patch_of_row](const auto& H) {
-      m_patches.initialize(H, m_dual, m_rest_coordinates.weights, m_rest_coordinates.coordinates, m_smooth_rest,
-                           patch_of_row);
-    });
+    std::vector<int>().swap(patch_of_vertex);
+    if(uses_dual_energy())
+      m_basis->visit([this, &patch_of_row](const auto& H) {
+        m_patches.initialize(H, m_dual, m_rest_coordinates.weights, m_rest_coordinates.coordinates,
+                             m_smooth_rest, patch_of_row);
+      });
   }
 
   // The iteration of solve() with the rotations of the patches: no step

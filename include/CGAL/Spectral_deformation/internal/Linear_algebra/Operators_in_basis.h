@@ -72,15 +72,17 @@ void gram_in_basis(Eigen::Index rows, const RowValue& row_value,
 
 /// `result` = Hᵀ A H for a symmetric sparse n × n matrix A and a basis H
 /// (n × m): A times blocks of columns of H (`for_each_column_block_product()`),
-/// each block multiplied by the columns of Hᵀ from its first one on, so that
-/// A H is never stored and only the lower triangle is summed (the result is
-/// symmetric to the last bit). A float H is widened by blocks of rows: Eigen
+/// each block multiplied by the transpose of the columns of H from the
+/// block's first one on, so that A H is never stored and only the lower
+/// triangle is summed (the result is symmetric to the last bit; for an A
+/// that is not symmetric it would be the mirror of the lower half). A float H is widened by blocks of rows: Eigen
 /// would widen all of it for the product.
 template <typename Scalar>
 void sparse_in_basis(const Eigen::SparseMatrix<double>& A,
                      const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& H, Eigen::MatrixXd& result)
 {
   eigen_assert(A.rows() == H.rows());
+  eigen_assert((A - Eigen::SparseMatrix<double>(A.transpose())).norm() <= 1e-12 * A.norm());
   const Eigen::Index m = H.cols();
   result.setZero(m, m);
   for_each_column_block_product(A, H, [&result, &H, m](Eigen::Index first, Eigen::Index width, const auto& buffer) {
