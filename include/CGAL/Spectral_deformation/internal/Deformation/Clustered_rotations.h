@@ -285,6 +285,10 @@ public:
     if(i < m_first || i >= m_first + m_block.rows())
     {
       const Eigen::Index count = (std::min)(block_rows, m_basis->rows() - i);
+      // Eigen frees a buffer before it allocates the new size: emptied
+      // first, the buffer is never left dangling by a failed allocation.
+      if(count != m_block.rows())
+        m_block.resize(0, 0);
       m_block = m_basis->middleRows(i, count).template cast<double>();
       m_first = i;
     }

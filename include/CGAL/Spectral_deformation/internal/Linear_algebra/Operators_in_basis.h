@@ -96,6 +96,8 @@ void sparse_in_basis(const Eigen::SparseMatrix<double>& A,
       for(Eigen::Index start = 0; start < H.rows(); start += block_rows)
       {
         const Eigen::Index count = (std::min)(block_rows, H.rows() - start);
+        if(count != widened.rows())
+          widened.resize(0, 0); // see Sequential_basis_rows: no dangling buffer after a failed allocation
         widened = H.block(start, first, count, m - first).template cast<double>();
         lower.noalias() += widened.transpose() * buffer.block(start, 0, count, width);
       }
