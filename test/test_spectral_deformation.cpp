@@ -1041,13 +1041,25 @@ Eigen::MatrixXd bend_bar_with_patches(std::size_t patches, const Eigen::Matrix3d
 
 } // namespace
 
+namespace {
+
+// Two spheres apart, their dual mesh and face centroids: the surface the
+// rotation patches are grouped on.
+struct Two_spheres_dual
+{
+  const internal::Mesh::Triangle_arrays arrays = internal::Mesh::extract_triangle_arrays(
+      to_mesh<Surface_mesh>(two_spheres(3)), CGAL::parameters::default_values());
+  const internal::Mesh::Dual_mesh_operator dual{arrays.triangles, arrays.number_of_vertices()};
+  const internal::Mesh::Positions centroids = dual.centroids(arrays.positions);
+};
+
+} // namespace
+
 TEST_CASE("rotation patches are connected, cover every dual vertex, one surface each", "[patches]")
 {
-  const Soup soup = two_spheres(3);
-  const internal::Mesh::Triangle_arrays arrays =
-      internal::Mesh::extract_triangle_arrays(to_mesh<Surface_mesh>(soup), CGAL::parameters::default_values());
-  const internal::Mesh::Dual_mesh_operator dual(arrays.triangles, arrays.number_of_vertices());
-  const internal::Mesh::Positions centroids = dual.centroids(arrays.positions);
+  const Two_spheres_dual spheres;
+  const internal::Mesh::Dual_mesh_operator& dual = spheres.dual;
+  const internal::Mesh::Positions& centroids = spheres.centroids;
   const std::vector<int>& row_faces = dual.row_faces();
   for(std::size_t count : {1, 7, 40, 300})
   {
@@ -1102,11 +1114,10 @@ TEST_CASE("rotation patches are connected, cover every dual vertex, one surface 
 TEST_CASE("the dual rows and the vertices are grouped from one grouping of the faces", "[patches]")
 {
   namespace D = internal::Deformation;
-  const Soup soup = two_spheres(3);
-  const internal::Mesh::Triangle_arrays arrays =
-      internal::Mesh::extract_triangle_arrays(to_mesh<Surface_mesh>(soup), CGAL::parameters::default_values());
-  const internal::Mesh::Dual_mesh_operator dual(arrays.triangles, arrays.number_of_vertices());
-  const internal::Mesh::Positions centroids = dual.centroids(arrays.positions);
+  const Two_spheres_dual spheres;
+  const internal::Mesh::Triangle_arrays& arrays = spheres.arrays;
+  const internal::Mesh::Dual_mesh_operator& dual = spheres.dual;
+  const internal::Mesh::Positions& centroids = spheres.centroids;
   const std::vector<int>& row_faces = dual.row_faces();
   const Eigen::Index n = arrays.number_of_vertices();
   for(std::size_t count : {1, 7, 40, 300})
