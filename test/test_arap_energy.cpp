@@ -68,8 +68,8 @@ std::size_t folded_pairs(const Surface_mesh& rest, const Surface_mesh& mesh)
     return Eigen::Vector3d((q - p).cross(r - p));
   };
   // As in benchmark/quality: below 89° at rest and above 90° after. The
-  // right-angled edges of a bar are at 90° to rounding, which contracted
-  // multiply-adds (-march=native) round to either side.
+  // rims where the end caps of a bar meet its sides are at 90° to rounding,
+  // which contracted multiply-adds (-march=native) round to either side.
   const double cos89 = std::cos(89.0 * pi / 180.0);
   std::size_t folded = 0;
   for(auto e : mesh.edges())
