@@ -59,30 +59,6 @@ double volume_of(const Surface_mesh& mesh)
   return volume;
 }
 
-std::size_t folded_pairs(const Surface_mesh& rest, const Surface_mesh& mesh)
-{
-  auto normal = [](const Surface_mesh& m, Surface_mesh::Face_index face) {
-    auto h = m.halfedge(face);
-    const Eigen::Vector3d p = position(m, m.source(h)), q = position(m, m.target(h)),
-                          r = position(m, m.target(m.next(h)));
-    return Eigen::Vector3d((q - p).cross(r - p));
-  };
-  // As in benchmark/quality: below 89° at rest and above 90° after. The
-  // rims where the end caps of a bar meet its sides are at 90° to rounding,
-  // which contracted multiply-adds (-march=native) round to either side.
-  const double cos89 = std::cos(89.0 * pi / 180.0);
-  std::size_t folded = 0;
-  for(auto e : mesh.edges())
-  {
-    const auto h = mesh.halfedge(e);
-    const auto f = mesh.face(h), g = mesh.face(mesh.opposite(h));
-    const Eigen::Vector3d nf = normal(rest, f), ng = normal(rest, g);
-    if(nf.dot(ng) > cos89 * nf.norm() * ng.norm() && normal(mesh, f).dot(normal(mesh, g)) < 0)
-      ++folded;
-  }
-  return folded;
-}
-
 // The bar of test_meshes (radius `radius`, length `length`): the vertices
 // below `low` fixed, those above `high` moved by `top` (a rotation about
 // `axis` through `center`), `patches` rotation patches, `frequencies`.

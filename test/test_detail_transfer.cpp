@@ -116,17 +116,8 @@ Spike_result deform_spiky_sphere(int levels, CGAL::Spectral_constraint_policy po
     const double before = (position(rest, a) - position(rest, b)).norm();
     const double after = (position(mesh, a) - position(mesh, b)).norm();
     result.max_edge_change = std::max(result.max_edge_change, std::abs(after - before) / before);
-    const auto h = halfedge(e, mesh);
-    const auto f = face(h, mesh), g = face(opposite(h, mesh), mesh);
-    auto normal = [](const Surface_mesh& m, boost::graph_traits<Surface_mesh>::face_descriptor face) {
-      auto hd = halfedge(face, m);
-      const Eigen::Vector3d p = position(m, source(hd, m)), q = position(m, target(hd, m)),
-                            r = position(m, target(next(hd, m), m));
-      return Eigen::Vector3d((q - p).cross(r - p));
-    };
-    if(normal(rest, f).dot(normal(rest, g)) > 0 && normal(mesh, f).dot(normal(mesh, g)) < 0)
-      ++result.folded_pairs;
   }
+  result.folded_pairs = folded_pairs(rest, mesh);
   return result;
 }
 

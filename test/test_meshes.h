@@ -174,6 +174,34 @@ inline Soup two_spheres(int levels = 2)
   return a;
 }
 
+/// The interior edges whose two face normals make less than 89° in `rest`
+/// and more than 90° in `deformed` (same connectivity): the folded pairs of
+/// `benchmark/quality`. Right-angled edges of the input (the rims of a
+/// capped bar) are at 90° to rounding, which contracted multiply-adds
+/// (`-march=native`) round to either side, hence 89° at rest.
+inline std::size_t folded_pairs(const Surface_mesh& rest, const Surface_mesh& deformed)
+{
+  auto normal = [](const Surface_mesh& mesh, Surface_mesh::Face_index face) {
+    const auto h = mesh.halfedge(face);
+    const Point& p = mesh.point(mesh.source(h));
+    return CGAL::cross_product(mesh.point(mesh.target(h)) - p, mesh.point(mesh.target(mesh.next(h))) - p);
+  };
+  const double cos89 = std::cos(89.0 * 3.14159265358979323846 / 180.0);
+  std::size_t folded = 0;
+  for(auto e : deformed.edges())
+  {
+    if(deformed.is_border(e))
+      continue;
+    const auto h = deformed.halfedge(e);
+    const auto f = deformed.face(h), g = deformed.face(deformed.opposite(h));
+    const Kernel::Vector_3 nf = normal(rest, f), ng = normal(rest, g);
+    if(nf * ng > cos89 * std::sqrt(nf.squared_length() * ng.squared_length()) &&
+       normal(deformed, f) * normal(deformed, g) < 0)
+      ++folded;
+  }
+  return folded;
+}
+
 } // namespace test_meshes
 
 #endif // SSMD_TEST_MESHES_H
