@@ -1,6 +1,11 @@
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Type stubs of the compiled module ssmd._ssmd."""
+"""Type stubs of the compiled module ssmd._ssmd.
+
+Checked against the module by `python3 -m mypy.stubtest ssmd` and by the
+test of python/tests/test_typing.py, which compares these signatures with
+the module's own.
+"""
 
 import os
 from typing import Any, Callable, Dict, Literal, Optional, Tuple, Union, overload
@@ -10,9 +15,15 @@ import numpy.typing as npt
 
 __version__: str
 
-ArrayLike = npt.ArrayLike
-PathLike = Union[str, os.PathLike]
-ProgressCallback = Callable[[Dict[str, Any]], None]
+_ArrayLike = npt.ArrayLike
+_PathLike = Union[str, "os.PathLike[str]"]
+_ProgressCallback = Callable[[Dict[str, Any]], None]
+_Policy = Literal["exact", "soft"]
+_Algorithm = Literal["spectral", "linear", "spatial"]
+_Energy = Literal["dual_laplacian_and_arap", "dual_laplacian", "arap"]
+_Basis = Literal["approximate", "exact"]
+_FloatArray = npt.NDArray[np.float64]
+_IndexArray = npt.NDArray[np.int64]
 
 
 class SolverError(RuntimeError):
@@ -20,67 +31,83 @@ class SolverError(RuntimeError):
 
 
 class Deformation:
-    """Deforms a triangle mesh given as NumPy arrays."""
+    """Deforms a triangle mesh (CGAL::Spectral_surface_mesh_deformation)."""
 
     def __init__(
         self,
-        V: ArrayLike,
-        F: ArrayLike,
+        V: Any,
+        F: Optional[_ArrayLike] = None,
         *,
-        handles: ArrayLike,
-        roi: Optional[ArrayLike] = None,
-        fixed: Optional[ArrayLike] = None,
+        handles: _ArrayLike,
+        roi: Optional[_ArrayLike] = None,
+        fixed: Optional[_ArrayLike] = None,
         m: int = 100,
-        policy: str = "exact",
-        algorithm: str = "spectral",
-        energy: str = "dual_laplacian_and_arap",
+        policy: _Policy = "exact",
+        algorithm: _Algorithm = "spectral",
+        energy: _Energy = "dual_laplacian_and_arap",
         constraint_weight: Optional[float] = None,
         single_precision_basis: bool = False,
         rotation_patches: Optional[int] = None,
         stage_angle: Optional[float] = None,
         volume_preservation: bool = False,
-        basis: str = "approximate",
-        basis_cache: Optional[PathLike] = None,
-        progress: Optional[ProgressCallback] = None,
+        basis: _Basis = "approximate",
+        basis_cache: Optional[_PathLike] = None,
+        progress: Optional[_ProgressCallback] = None,
         single_precision_basis_threshold: Optional[int] = None,
     ) -> None: ...
 
     @property
     def number_of_vertices(self) -> int: ...
     @property
-    def handles(self) -> npt.NDArray[np.int64]: ...
+    def handles(self) -> _IndexArray: ...
     @property
-    def roi(self) -> npt.NDArray[np.int64]: ...
+    def roi(self) -> _IndexArray: ...
     @property
-    def vertices(self) -> npt.NDArray[np.float64]: ...
+    def vertices(self) -> _FloatArray: ...
     @property
-    def targets(self) -> npt.NDArray[np.float64]: ...
+    def targets(self) -> _FloatArray: ...
     @property
     def preprocess_report(self) -> Dict[str, Any]: ...
     @property
     def deform_report(self) -> Dict[str, Any]: ...
 
-    def set_targets(self, P: ArrayLike, which: Optional[ArrayLike] = None) -> None: ...
-    def translate(self, vector: ArrayLike, which: Optional[ArrayLike] = None) -> None: ...
+    def set_targets(self, P: _ArrayLike, which: Optional[_ArrayLike] = None) -> None: ...
+    def translate(self, vector: _ArrayLike, which: Optional[_ArrayLike] = None) -> None: ...
     def rotate(
         self,
-        rotation: ArrayLike,
-        center: Optional[ArrayLike] = None,
-        which: Optional[ArrayLike] = None,
+        rotation: _ArrayLike,
+        center: Optional[_ArrayLike] = None,
+        which: Optional[_ArrayLike] = None,
     ) -> None: ...
-    def deform(self, iterations: int = 10, tolerance: float = 1e-4) -> npt.NDArray[np.float64]: ...
+    def deform(self, iterations: int = 10, tolerance: float = 1e-4) -> _FloatArray: ...
     def reset(self) -> None: ...
-    def save_basis(self, file: PathLike) -> None: ...
-    def load_basis(self, file: PathLike, progress: Optional[ProgressCallback] = None) -> None: ...
+    def save_basis(self, file: _PathLike) -> None: ...
+    def load_basis(self, file: _PathLike, progress: Optional[_ProgressCallback] = None) -> None: ...
 
 
+# (V, F, m) arrays, or a mesh object and m by name: manifold_harmonics(mesh, m=30).
 @overload
 def manifold_harmonics(
-    V: ArrayLike, F: ArrayLike, m: int, *, progress: Optional[ProgressCallback] = None,
-    mass: Literal[False] = False,
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+    V: _ArrayLike, F: _ArrayLike, m: int, *,
+    progress: Optional[_ProgressCallback] = None, mass: Literal[False] = False,
+) -> Tuple[_FloatArray, _FloatArray]: ...
 @overload
 def manifold_harmonics(
-    V: ArrayLike, F: ArrayLike, m: int, *, progress: Optional[ProgressCallback] = None,
-    mass: Literal[True],
-) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+    V: _ArrayLike, F: _ArrayLike, m: int, *,
+    progress: Optional[_ProgressCallback] = None, mass: Literal[True],
+) -> Tuple[_FloatArray, _FloatArray, _FloatArray]: ...
+@overload
+def manifold_harmonics(
+    V: Any, F: None = None, *, m: int,
+    progress: Optional[_ProgressCallback] = None, mass: Literal[False] = False,
+) -> Tuple[_FloatArray, _FloatArray]: ...
+@overload
+def manifold_harmonics(
+    V: Any, F: None = None, *, m: int,
+    progress: Optional[_ProgressCallback] = None, mass: Literal[True],
+) -> Tuple[_FloatArray, _FloatArray, _FloatArray]: ...
+
+def from_file(file: _PathLike) -> Tuple[_FloatArray, _IndexArray]: ...
+def to_file(file: _PathLike, V: Any, F: Optional[_ArrayLike] = None) -> None: ...
+def read_selection(file: _PathLike, number_of_vertices: int) -> Tuple[_IndexArray, _IndexArray]: ...
+def read_handle_transformation(file: _PathLike) -> _FloatArray: ...
