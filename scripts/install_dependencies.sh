@@ -14,6 +14,7 @@ packages=(
   f3d xvfb xauth python3-pil python3-matplotlib fonts-dejavu-core
   libopenmesh-dev libcli11-dev nlohmann-json3-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
+  python3-venv python3-pip python3-setuptools python3-wheel python3-meshio python3-tqdm python3-mypy
   "$@"
 )
 

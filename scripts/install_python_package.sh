@@ -1,23 +1,42 @@
 #!/usr/bin/env bash
 # Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Makes `python3 -c "import ssmd"` work for the user who runs it: copies the
-# Python package built in build/python/ssmd (or $SSMD_BUILD_DIR) into the
-# user's site-packages of /usr/bin/python3 (~/.local/lib/python3.X/...), which
-# needs no root and is also the user site of any other CPython 3.X. To install
-# elsewhere: cmake --install build --component python --prefix PREFIX.
+# Installs the Python package ssmd with pip into the project's virtual
+# environment build/venv (or $SSMD_BUILD_DIR/venv), made anew from Debian's
+# /usr/bin/python3 with --system-site-packages, so that NumPy, meshio, tqdm,
+# pytest and mypy come from Debian's packages; the Python tests of ctest run
+# from it. Then copies the installed package into the user's site of
+# /usr/bin/python3 (~/.local/lib/python3.X/site-packages), so that
+# `python3 -c "import ssmd"` and the demo work with the system's Python too.
+#
+#   install_python_package.sh         pip install . (pyproject.toml); with a
+#                                     configured build/, its module is used:
+#                                     nothing compiles after build.sh
+#   install_python_package.sh WHEEL   installs that wheel instead
+#                                     (scripts/test_python_package.sh)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${SSMD_BUILD_DIR:-$root/build}"
-package="$build/python/ssmd"
-if ! ls "$package"/_ssmd*.so >/dev/null 2>&1; then
-  echo "the Python package was not built (pybind11 missing?): skipping its installation" >&2
-  exit 0
+environment="$build/venv"
+wheel="${1:-}"
+
+/usr/bin/python3 -m venv --clear --system-site-packages "$environment"
+if [ -n "$wheel" ]; then
+  "$environment/bin/pip" install --no-index --quiet "$wheel"
+else
+  if [ -d "$build/python/CMakeFiles/ssmd_python_module.dir" ]; then
+    export SSMD_CMAKE_BUILD_DIR="$build"
+  fi
+  (cd "$root" && "$environment/bin/pip" install --no-build-isolation --quiet .)
 fi
+installed="$(cd / && PYTHONNOUSERSITE=1 "$environment/bin/python" -c "import os, ssmd; print(os.path.dirname(ssmd.__file__))")"
+echo "Python package ssmd installed in $installed (run $environment/bin/python)"
+
+# The copy for /usr/bin/python3 (Debian forbids pip in its own environment).
 site="$(/usr/bin/python3 -m site --user-site)"
 mkdir -p "$site"
 rm -rf "$site/ssmd"
-mkdir "$site/ssmd"
-cp "$package"/__init__.py "$package"/_ssmd*.so "$package"/_ssmd.pyi "$package"/py.typed "$site/ssmd/"
+cp -r "$installed" "$site/ssmd"
+rm -rf "$site/ssmd/__pycache__"
 cd /
-/usr/bin/python3 -c "import ssmd; print('Python package ssmd', ssmd.__version__, 'installed in', ssmd.__path__[0])"
+/usr/bin/python3 -c "import ssmd; print('and for /usr/bin/python3 in', ssmd.__path__[0])"
