@@ -33,9 +33,13 @@ rm -rf "$work/source" "$work/v" "$work/v2" "$work/dist" "$work/elsewhere"
 mkdir -p "$work/source" "$work/elsewhere"
 # tar keeps the modification times, so that the kept CMake build sees
 # unchanged files as unchanged.
-(cd "$root" && git ls-files -z --cached --others --exclude-standard |
-  xargs -0 sh -c 'for f; do [ -e "$f" ] && printf "%s\0" "$f"; done' sh |
-  tar --null -T - -cf -) | tar -xf - -C "$work/source"
+if git -C "$root" rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  (cd "$root" && git ls-files -z --cached --others --exclude-standard |
+    xargs -0 sh -c 'for f; do [ -e "$f" ] && printf "%s\0" "$f"; done' sh |
+    tar --null -T - -cf -) | tar -xf - -C "$work/source"
+else
+  (cd "$root" && tar --exclude=./build --exclude='./build-*' -cf - .) | tar -xf - -C "$work/source"
+fi
 step "clean copy of the sources"
 
 (cd "$work/source" && "$python" -m venv --system-site-packages ../v && ../v/bin/pip install --no-build-isolation .)
