@@ -33,10 +33,10 @@ installed="$(cd / && PYTHONNOUSERSITE=1 "$environment/bin/python" -c "import os,
 echo "Python package ssmd installed in $installed (run $environment/bin/python)"
 
 # The copy for /usr/bin/python3 (Debian forbids pip in its own environment).
-site="$(/usr/bin/python3 -m site --user-site)"
+site="$(env -u PYTHONNOUSERSITE /usr/bin/python3 -c "import site; print(site.getusersitepackages())")"
 mkdir -p "$site"
 rm -rf "$site/ssmd"
 cp -r "$installed" "$site/ssmd"
 rm -rf "$site/ssmd/__pycache__"
 cd /
-/usr/bin/python3 -c "import ssmd; print('and for /usr/bin/python3 in', ssmd.__path__[0])"
+env -u PYTHONNOUSERSITE /usr/bin/python3 -c "import ssmd; print('and for /usr/bin/python3 in', ssmd.__path__[0])"
