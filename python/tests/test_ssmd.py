@@ -73,7 +73,7 @@ def test_rotation_patches(tube_mesh):
     diagonal = np.linalg.norm(V.max(axis=0) - V.min(axis=0))
     assert np.max(np.abs(run(10**9) - full)) <= 1e-9 * diagonal
     few = np.max(np.linalg.norm(run(20) - full, axis=1))
-    # 200 patches of the region's 920 faces: several faces each, so that the
+    # 200 patches of the tube's 960 faces: several faces each, so that the
     # library keeps the patches rather than going back to the full iteration
     # on patches of one or two faces.
     many = np.max(np.linalg.norm(run(200) - full, axis=1))
