@@ -8,7 +8,7 @@
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_RAYLEIGH_RITZ_H
 
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_state.h>
-#include <CGAL/Spectral_deformation/internal/Eigensolvers/Largest_eigenpairs.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Symmetric_eigenpairs.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
 
 #include <Eigen/Dense>

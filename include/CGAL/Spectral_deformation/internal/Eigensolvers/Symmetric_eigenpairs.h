@@ -4,8 +4,8 @@
 // This header is part of the Spectral Surface Mesh Deformation package, which
 // builds on CGAL but is not part of the CGAL library.
 
-#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_LARGEST_EIGENPAIRS_H
-#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_LARGEST_EIGENPAIRS_H
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SYMMETRIC_EIGENPAIRS_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SYMMETRIC_EIGENPAIRS_H
 
 #include <Eigen/Dense>
 
@@ -14,8 +14,9 @@
 // With a LAPACK (CGAL_SSMD_USE_BLAS: OpenBLAS carries one), dsyevr computes
 // only the eigenvectors asked for, after the reduction to tridiagonal form;
 // Eigen's solver accumulates all of them. On the Rayleigh-Ritz matrices of
-// the block eigensolver (k × k, k of 300 to 600, m of them wanted) that is
-// the larger part of the cost.
+// the block eigensolver (k × k, k of 300 to 600, m of them wanted) and on the
+// small meshes solved densely (m of n wanted) that is the larger part of the
+// cost.
 #ifdef CGAL_SSMD_USE_BLAS
 extern "C" void dsyevr_(const char* jobz, const char* range, const char* uplo, const int* n,
                         double* a, const int* lda, const double* vl, const double* vu,
@@ -29,19 +30,20 @@ namespace Spectral_deformation {
 namespace internal {
 namespace Eigensolvers {
 
-/// The `count` largest eigenpairs of the symmetric matrix `A` (its lower
-/// triangle is read): `values` ascending, `vectors` (rows of A × count)
-/// orthonormal. Returns false when the eigensolver fails.
-inline bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index count,
-                                         Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
+/// The eigenpairs of ranks `first` to `first + count - 1` (ascending order,
+/// from 0) of the symmetric matrix `A` (its lower triangle is read):
+/// `values` ascending, `vectors` (rows of A × count) orthonormal. Returns
+/// false when the eigensolver fails. `A` is taken by value: LAPACK
+/// overwrites it.
+inline bool symmetric_eigenpairs_in_range(Eigen::MatrixXd A, Eigen::Index first, Eigen::Index count,
+                                          Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
 {
   const Eigen::Index n = A.rows();
-  if(count < 1 || count > n)
+  if(count < 1 || first < 0 || first + count > n)
     return false;
 #ifdef CGAL_SSMD_USE_BLAS
-  Eigen::MatrixXd a = A;
   const int size = static_cast<int>(n);
-  const int first = static_cast<int>(n - count + 1), last = static_cast<int>(n);
+  const int lowest = static_cast<int>(first + 1), highest = static_cast<int>(first + count);
   const double unused = 0, absolute_tolerance = 0;
   int found = 0, info = 0;
   Eigen::VectorXd all_values(n);
@@ -50,7 +52,7 @@ inline bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index 
   // Workspace query, then the solve.
   double work_size = 0;
   int iwork_size = 0, query = -1;
-  dsyevr_("V", "I", "L", &size, a.data(), &size, &unused, &unused, &first, &last,
+  dsyevr_("V", "I", "L", &size, A.data(), &size, &unused, &unused, &lowest, &highest,
           &absolute_tolerance, &found, all_values.data(), vectors.data(), &size, support.data(),
           &work_size, &query, &iwork_size, &query, &info);
   if(info != 0)
@@ -58,7 +60,7 @@ inline bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index 
   const int lwork = static_cast<int>(work_size), liwork = iwork_size;
   std::vector<double> work(static_cast<std::size_t>(lwork));
   std::vector<int> iwork(static_cast<std::size_t>(liwork));
-  dsyevr_("V", "I", "L", &size, a.data(), &size, &unused, &unused, &first, &last,
+  dsyevr_("V", "I", "L", &size, A.data(), &size, &unused, &unused, &lowest, &highest,
           &absolute_tolerance, &found, all_values.data(), vectors.data(), &size, support.data(),
           work.data(), &lwork, iwork.data(), &liwork, &info);
   if(info != 0 || found != static_cast<int>(count))
@@ -69,10 +71,26 @@ inline bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index 
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(A);
   if(solver.info() != Eigen::Success)
     return false;
-  values = solver.eigenvalues().tail(count);
-  vectors = solver.eigenvectors().rightCols(count);
+  values = solver.eigenvalues().segment(first, count);
+  vectors = solver.eigenvectors().middleCols(first, count);
   return true;
 #endif
+}
+
+/// The `count` largest eigenpairs of the symmetric matrix `A`, as
+/// `symmetric_eigenpairs_in_range()`.
+inline bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index count,
+                                         Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
+{
+  return symmetric_eigenpairs_in_range(A, A.rows() - count, count, values, vectors);
+}
+
+/// The `count` smallest eigenpairs of the symmetric matrix `A`, as
+/// `symmetric_eigenpairs_in_range()`.
+inline bool smallest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index count,
+                                          Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
+{
+  return symmetric_eigenpairs_in_range(A, 0, count, values, vectors);
 }
 
 } // namespace Eigensolvers
@@ -80,4 +98,4 @@ inline bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index 
 } // namespace Spectral_deformation
 } // namespace CGAL
 
-#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_LARGEST_EIGENPAIRS_H
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SYMMETRIC_EIGENPAIRS_H

@@ -7,6 +7,8 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_DENSE_EIGENPAIRS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_DENSE_EIGENPAIRS_H
 
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Symmetric_eigenpairs.h>
+
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
@@ -30,14 +32,13 @@ inline bool dense_generalized_eigenpairs(const Eigen::SparseMatrix<double>& stif
   const Eigen::VectorXd inv_sqrt_mass = mass.cwiseSqrt().cwiseInverse();
   const Eigen::MatrixXd scaled =
       inv_sqrt_mass.asDiagonal() * Eigen::MatrixXd(stiffness) * inv_sqrt_mass.asDiagonal();
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(scaled);
-  if(solver.info() != Eigen::Success)
+  Eigen::MatrixXd vectors;
+  if(!smallest_symmetric_eigenpairs(scaled, m, eigenvalues, vectors))
   {
     message = "the dense eigensolver did not converge";
     return false;
   }
-  eigenvalues = solver.eigenvalues().head(m);
-  eigenvectors = inv_sqrt_mass.asDiagonal() * solver.eigenvectors().leftCols(m);
+  eigenvectors = inv_sqrt_mass.asDiagonal() * vectors;
   return true;
 }
 
