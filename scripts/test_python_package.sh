@@ -10,7 +10,9 @@
 #  3. pip wheel --no-build-isolation --no-deps .    (reuses the CMake build of
 #     step 1: nothing compiles; --no-deps, or pip would want a wheel of NumPy);
 #  4. the wheel installs into a second fresh environment, which imports it;
-#  5. the wheel goes into the project's environment build/venv
+#  5. cmake --install --component python of the same build into a prefix,
+#     imported from there;
+#  6. the wheel goes into the project's environment build/venv
 #     (scripts/install_python_package.sh WHEEL), from which ctest runs the
 #     Python tests: the module is compiled once for all of it.
 # The CMake build directory is kept in build/python_package/cmake, so that a
@@ -67,6 +69,19 @@ step "pip wheel --no-build-isolation --no-deps ."
 "$work/v2/bin/pip" install --no-index "$wheel"
 check_import "$work/v2"
 step "the wheel in a second new environment"
+
+# The CMake installation of the same build (cmake --install --component
+# python), for those who install the package with the C++ one.
+rm -rf "$work/prefix"
+cmake --install "$work/cmake" --component python --prefix "$work/prefix" >/dev/null
+site="$(ls -d "$work"/prefix/lib/python3*/*-packages)"
+(cd "$work/elsewhere" && PYTHONPATH="$site" "$python" - "$site" <<'PYTHON'
+import os, sys, ssmd
+here = os.path.realpath(ssmd.__file__)
+assert here.startswith(os.path.realpath(sys.argv[1]) + os.sep), "ssmd imported from " + here
+PYTHON
+)
+step "cmake --install --component python, imported from the prefix"
 
 bash "$root/scripts/install_python_package.sh" "$wheel"
 step "the wheel in the project's environment $build/venv"
