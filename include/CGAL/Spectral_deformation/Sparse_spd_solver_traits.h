@@ -299,8 +299,11 @@ public:
     if(!omp_in_parallel() && omp_get_num_procs() < CHOLMOD_OMP_NUM_THREADS &&
        omp_get_max_active_levels() <= 1)
     {
+      // A team of one thread would not be active, and CHOLMOD's loops
+      // would then form the active level; two is the smallest active team.
+      constexpr int smallest_active_team = 2;
       std::exception_ptr error;
-#pragma omp parallel num_threads(2)
+#pragma omp parallel num_threads(smallest_active_team)
       {
         if(omp_get_thread_num() == 0)
         {
@@ -417,7 +420,9 @@ public:
     // The work arrays of the first solve are allocated then.
     const Spectral_deformation::internal::Memory::Cholmod_huge_page_allocator huge_pages(
         m_process_wide_tuning);
-    if(m_subtree_solve.usable() && Spectral_deformation::internal::available_threads() >= 2)
+    if(m_subtree_solve.usable() &&
+       Spectral_deformation::internal::available_threads() >=
+           Spectral_deformation::internal::Linear_algebra::Two_subtree_triangular_solve::number_of_subtrees)
       return solve_in_subtrees(B, X) && X.allFinite();
     // Otherwise a simplicial factor is solved column by column without the
     // BLAS: two threads each solve half of the right-hand sides against the
@@ -430,7 +435,7 @@ public:
             : 1;
     bool success[2] = {true, true};
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(2) if(halves == 2)
+#pragma omp parallel for num_threads(static_cast<int>(halves)) if(halves > 1)
 #endif
     for(int half = 0; half < static_cast<int>(halves); ++half)
     {

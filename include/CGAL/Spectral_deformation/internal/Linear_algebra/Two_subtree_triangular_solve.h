@@ -45,6 +45,10 @@ namespace Linear_algebra {
 class Two_subtree_triangular_solve
 {
 public:
+  // The solve's structure: the subtrees, one per thread, that its two
+  // parallel sweeps run on.
+  static constexpr int number_of_subtrees = 2;
+
   // Analyzes the pattern of L (n columns starting at `starts`, of
   // `counts` entries each, or, when `counts` is null, packed: n + 1 starts;
   // `rows` the row indices). `usable()` tells whether the split was found:
@@ -103,7 +107,7 @@ public:
     std::vector<int> top;
     double top_entries = 0;
     std::vector<int> assignment;
-    double load[2];
+    double load[number_of_subtrees];
     for(;;)
     {
       std::sort(candidates.begin(), candidates.end(),
@@ -149,7 +153,7 @@ public:
     for(int j = n - 1; j >= 0; --j)
       if(owner[j] < 0 && m_top_slot[j] < 0 && parent[j] >= 0)
         owner[j] = owner[parent[j]];
-    std::size_t owned[2] = {0, 0};
+    std::size_t owned[number_of_subtrees] = {0, 0};
     for(int j = 0; j < n; ++j)
       if(owner[j] >= 0)
         ++owned[owner[j]];
@@ -171,11 +175,11 @@ public:
   {
     const std::size_t top_size = m_top.size();
     const int* const ends = m_ends.data();
-    std::vector<double> top_updates[2];
+    std::vector<double> top_updates[number_of_subtrees];
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(2) schedule(static, 1)
+#pragma omp parallel for num_threads(number_of_subtrees) schedule(static, 1)
 #endif
-    for(int thread = 0; thread < 2; ++thread)
+    for(int thread = 0; thread < number_of_subtrees; ++thread)
     {
       std::vector<double>& updates = top_updates[thread];
       updates.assign(top_size * W, 0.0);
@@ -233,9 +237,9 @@ public:
     for(auto j = m_top.rbegin(); j != m_top.rend(); ++j)
       backward(*j);
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(2) schedule(static, 1)
+#pragma omp parallel for num_threads(number_of_subtrees) schedule(static, 1)
 #endif
-    for(int thread = 0; thread < 2; ++thread)
+    for(int thread = 0; thread < number_of_subtrees; ++thread)
       for(auto j = m_columns[thread].rbegin(); j != m_columns[thread].rend(); ++j)
         backward(*j);
   }
@@ -258,7 +262,7 @@ public:
       // threads: on one thread these copies were a large part of the solve.
       double* const y = work.data();
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(2) schedule(static)
+#pragma omp parallel for schedule(static)
 #endif
       for(Eigen::Index k = 0; k < n; ++k)
       {
@@ -276,7 +280,7 @@ public:
       default: solve<1>(starts, rows, values, y); break;
       }
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(2) schedule(static)
+#pragma omp parallel for schedule(static)
 #endif
       for(Eigen::Index k = 0; k < n; ++k)
       {
@@ -336,7 +340,7 @@ private:
   }
 
   std::vector<int> m_ends;                      // one past the last entry of each column
-  std::vector<int> m_columns[2];                // the columns of each thread's subtrees, increasing
+  std::vector<int> m_columns[number_of_subtrees];               // the columns of each thread's subtrees, increasing
   std::vector<int> m_top;                       // the other columns, increasing
   std::vector<int> m_top_slot;                  // column -> index in m_top, or -1
   bool m_usable = false;
