@@ -35,6 +35,7 @@ namespace Spectral_deformation {
 namespace internal {
 namespace Eigensolvers {
 
+using Linear_algebra::Openmp_teams_beside_threaded_blas;
 using Linear_algebra::Single_threaded_blas;
 using Memory::Background_prefault;
 using Memory::prefault_until;
@@ -90,7 +91,9 @@ bool factor_while_mapping(SparseSPDSolverTraits& solver, const Eigen::SparseMatr
     std::atomic<bool> factored{false};
     bool success = false;
     std::exception_ptr error;
-#pragma omp parallel num_threads(2)
+    // One thread factors, the other maps.
+    constexpr int roles = 2;
+#pragma omp parallel num_threads(roles)
     {
       if(omp_get_thread_num() == 0)
       {
@@ -216,6 +219,7 @@ bool block_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
                               Block_lanczos_failure& failure)
 {
   const Single_threaded_blas single_threaded_blas(settings.process_wide_tuning);
+  const Openmp_teams_beside_threaded_blas teams(settings.process_wide_tuning);
   const double sigma = shift_invert_shift(mass);
   const Laplacian_null_space null_space(stiffness, mass);
   Block_lanczos_sizes sizes;

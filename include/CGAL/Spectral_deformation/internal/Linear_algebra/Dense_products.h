@@ -31,6 +31,7 @@ extern "C" void dgemm_(const char* transa, const char* transb, const int* m, con
 #ifdef CGAL_SSMD_USE_OPENBLAS
 extern "C" int openblas_get_num_threads(void);
 extern "C" void openblas_set_num_threads(int);
+extern "C" int openblas_get_parallel(void);
 #endif
 
 namespace CGAL {
@@ -113,6 +114,60 @@ public:
 private:
   int m_threads;
 #endif
+};
+
+// Whether the linked BLAS runs threads of its own that wait for work by
+// spinning: OpenBLAS's pthreads build (the one Debian installs by default)
+// with more than one thread.
+inline bool blas_runs_spinning_threads()
+{
+#ifdef CGAL_SSMD_USE_OPENBLAS
+  constexpr int pthreads_build = 1;
+  return openblas_get_parallel() == pthreads_build && openblas_get_num_threads() > 1;
+#else
+  return false;
+#endif
+}
+
+// Keeps the OpenMP teams that the calling thread starts to one thread for
+// its lifetime when the linked OpenBLAS runs its own threads (its pthreads
+// build, the one Debian installs by default, with more than one thread) and
+// the BLAS was not made single-threaded (`Single_threaded_blas`). OpenBLAS's
+// threads wait for work spinning on `sched_yield()` for some 0.1 s after each
+// call; between the products of an eigensolver, OpenMP teams running beside
+// them got a fraction of the cores, and their barriers waited for threads
+// that were not scheduled: the exact basis of a 13,500-vertex region took
+// 1.2-2.7 s, against 0.6-0.7 s with either the BLAS or the OpenMP teams on
+// one thread. Only the calling thread's setting changes (`nthreads-var`
+// is a per-thread setting of OpenMP); other threads of the program and the
+// BLAS are untouched. The BLAS keeps its threads for the dense products.
+class Openmp_teams_beside_threaded_blas
+{
+public:
+  explicit Openmp_teams_beside_threaded_blas(bool blas_single_threaded)
+  {
+#if defined(CGAL_SSMD_USE_OPENBLAS) && defined(_OPENMP)
+    if(!blas_single_threaded && blas_runs_spinning_threads() && !omp_in_parallel())
+    {
+      m_threads = omp_get_max_threads();
+      omp_set_num_threads(1);
+    }
+#else
+    (void)blas_single_threaded;
+#endif
+  }
+  ~Openmp_teams_beside_threaded_blas()
+  {
+#if defined(CGAL_SSMD_USE_OPENBLAS) && defined(_OPENMP)
+    if(m_threads > 0)
+      omp_set_num_threads(m_threads);
+#endif
+  }
+  Openmp_teams_beside_threaded_blas(const Openmp_teams_beside_threaded_blas&) = delete;
+  Openmp_teams_beside_threaded_blas& operator=(const Openmp_teams_beside_threaded_blas&) = delete;
+
+private:
+  int m_threads = 0;
 };
 
 // dense_product() split over the OpenMP threads along the long dimension of
