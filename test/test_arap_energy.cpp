@@ -149,7 +149,7 @@ TEST_CASE("ARAP energy: rest targets give the rest shape, a rigid motion of all 
     }
 }
 
-TEST_CASE("ARAP energy: one rotation patch per vertex is the full iteration, fewer patches approach it",
+TEST_CASE("ARAP energy: more patches approach the full iteration; under four faces per patch it is the full one",
           "[arap][patches]")
 {
   const Eigen::Matrix3d bend = Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()).toRotationMatrix();
@@ -161,13 +161,10 @@ TEST_CASE("ARAP energy: one rotation patch per vertex is the full iteration, few
   setup.energy = energy;
   const Eigen::MatrixXd full = positions_of(deform_bar(setup, bend, center, 10, 0.0));
   const double diagonal = diagonal_of(full);
-  setup.patches = 1000000;
-  const double exact = (positions_of(deform_bar(setup, bend, center, 10, 0.0)) - full).rowwise().norm().maxCoeff();
-  INFO("one patch per vertex: largest distance to the full iteration " << exact / diagonal);
-  CHECK(exact < 1e-9 * diagonal);
 
+  // The bar has about 600 faces: 128 patches keep more than four faces each.
   double previous = std::numeric_limits<double>::infinity();
-  for(std::size_t patches : {8, 64, 512})
+  for(std::size_t patches : {8, 32, 128})
   {
     setup.patches = patches;
     const double distance =
@@ -177,6 +174,12 @@ TEST_CASE("ARAP energy: one rotation patch per vertex is the full iteration, few
     previous = distance;
   }
   CHECK(previous < 1e-2);
+  CHECK(previous > 1e-6);
+
+  setup.patches = 1000000;
+  const double exact = (positions_of(deform_bar(setup, bend, center, 10, 0.0)) - full).rowwise().norm().maxCoeff();
+  INFO("a million patches on about 600 faces: largest distance to the full iteration " << exact / diagonal);
+  CHECK(exact < 1e-12 * diagonal);
   }
 }
 

@@ -145,9 +145,10 @@ public:
   /// products with the n×m basis, whatever the size of the mesh; only the
   /// detail transfer and the output stay O(n). On the manual's quality
   /// sweep the default's ARAP energies are within a few per cent of the
-  /// full iteration's. 0 restores the full iteration; a count at least the
-  /// number of dual vertices gives each its own patch. Takes effect at once,
-  /// the basis and the factorization are kept.
+  /// full iteration's. 0 restores the full iteration, and so does a region
+  /// with fewer than four faces per patch (about 2,000 vertices with the
+  /// default), where the full iteration is both cheaper and more accurate.
+  /// Takes effect at once, the basis and the factorization are kept.
   void set_rotation_patches(std::size_t count)
   {
     static_assert(is_spectral, "set_rotation_patches(): SPATIAL_DUAL_LAPLACIAN has no basis");
