@@ -74,7 +74,14 @@ namespace CGAL {
 ///   threads; with the default CHOLMOD simplicial factor, each solve is
 ///   split between two threads too, by subtrees of the elimination tree
 ///   (see `Cholmod_llt_solver_traits::solves_in_subtrees()`).
-///   `OMP_NUM_THREADS=1` makes the whole method sequential.
+///   `OMP_NUM_THREADS=1` makes the whole method sequential. Beside an
+///   OpenBLAS that runs threads of its own (its pthreads build, Debian's
+///   default, with more than one thread) and without
+///   `set_process_wide_tuning()`, the method keeps the OpenMP teams it
+///   starts to one thread and leaves the parallel work to OpenBLAS: the
+///   idle OpenBLAS threads spin between calls and took the cores from the
+///   teams (up to 2-3 times slower). Only the calling thread's OpenMP
+///   setting changes, and only while `compute()` runs.
 ///
 /// Some of its speed comes from settings of the whole process, which
 /// `compute()` changes only after `set_process_wide_tuning(true)`: by
@@ -242,8 +249,9 @@ public:
   /// A program that owns its process (a command-line tool, a benchmark)
   /// should enable it; a library that shares its process with code it does
   /// not know should leave it off. Without it, OpenBLAS runs on the threads
-  /// the process gives it: where that is more than one, the method is
-  /// slower, and its results differ from those with the option by rounding
+  /// the process gives it: where that is more than one, the method runs its
+  /// own parts on one thread (see the class description), and its results
+  /// differ from those with the option by rounding
   /// (a multi-threaded OpenBLAS splits its products, and sums them in
   /// another order). Setting `OPENBLAS_NUM_THREADS=1` in the environment
   /// gives the results of the option without it.
