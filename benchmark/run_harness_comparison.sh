@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Copyright (c) 2026 The Spectral Surface Mesh Deformation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The package against CGAL ARAP as a user gets both, with the reference
+# harness that sits beside the repository (../shared/bench, see its README):
+# installs the package from build/ (or $SSMD_BUILD_DIR) into a prefix, makes
+# the cases of benchmark/harness_cases/ (the mesh's own resolution, and the
+# subdivided armadillo and dino with SUBDIVIDE=1), and runs compare.sh on
+# each, ROUNDS rounds (default 3). The harness builds its programs against
+# the installed package with the library's defaults.
+#
+#   bash benchmark/run_harness_comparison.sh [ROUNDS] [CASE ...]
+#
+# Output: one log per case in $OUT (default build/harness), and the lines of
+# compare.sh with the ratios on standard output.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${SSMD_BUILD_DIR:-$root/build}"
+bench="${SSMD_HARNESS_DIR:-$root/../shared/bench}"
+rounds="${1:-3}"
+shift || true
+out="${OUT:-$build/harness}"
+if [ ! -x "$bench/compare.sh" ]; then
+  echo "error: the reference harness is not at $bench (set SSMD_HARNESS_DIR)" >&2
+  exit 1
+fi
+bash "$root/scripts/fetch_sample_meshes.sh" >/dev/null
+mkdir -p "$out/cases"
+cmake --install "$build" --prefix "$out/prefix" >/dev/null
+export BENCH_BUILD="${BENCH_BUILD:-$out/bench-build}"
+meshes="$build/data/meshes"
+
+cases=("$@")
+if [ ${#cases[@]} -eq 0 ]; then
+  cases=(cactus_top dino_neck bunny_ears armadillo_arm)
+fi
+for name in "${cases[@]}"; do
+  spec="$root/benchmark/harness_cases/$name.json"
+  prefix="$out/cases/$name"
+  /usr/bin/python3 "$bench/make_case.py" "$spec" --data-dir "$meshes" --out-prefix "$prefix" >/dev/null
+  mesh="$meshes/$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["mesh"])' "$spec")"
+  echo "== $name ($mesh)"
+  bash "$bench/compare.sh" "$out/prefix" "$mesh" "$prefix.sel" "$prefix.def" "$rounds" | tee "$out/$name.log" |
+    grep -E "^round [0-9]+, "
+  if [ "${SUBDIVIDE:-0}" = 1 ] && [ "$name" != cactus_top ] && [ "$name" != bunny_ears ]; then
+    fine="$out/cases/${name}_1.off"
+    [ -f "$fine" ] || "$BENCH_BUILD/arap/subdivide" "$mesh" "$fine" 1 >/dev/null
+    python3 - "$spec" "$fine" "$out/cases/${name}_1.json" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+spec["mesh"] = sys.argv[2]
+json.dump(spec, open(sys.argv[3], "w"))
+PY
+    /usr/bin/python3 "$bench/make_case.py" "$out/cases/${name}_1.json" --out-prefix "$prefix"_1 >/dev/null
+    echo "== ${name}, subdivided once"
+    bash "$bench/compare.sh" "$out/prefix" "$fine" "$prefix"_1.sel "$prefix"_1.def "$rounds" |
+      tee "$out/${name}_1.log" | grep -E "^round [0-9]+, "
+  fi
+done
