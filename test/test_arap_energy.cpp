@@ -149,7 +149,7 @@ TEST_CASE("ARAP energy: rest targets give the rest shape, a rigid motion of all 
     }
 }
 
-TEST_CASE("ARAP energy: more patches approach the full iteration; under four faces per patch it is the full one",
+TEST_CASE("ARAP energy: more patches approach the full iteration, and under four faces per patch it is the full one",
           "[arap][patches]")
 {
   const Eigen::Matrix3d bend = Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()).toRotationMatrix();

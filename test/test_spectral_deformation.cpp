@@ -1209,7 +1209,7 @@ TEST_CASE("rotation patches grow by distance along the surface, not by the numbe
   }
 }
 
-TEST_CASE("more patches approach the full iteration; under four faces per patch the region is iterated in full",
+TEST_CASE("more patches approach the full iteration, and under four faces per patch the region is iterated in full",
           "[deformation][patches]")
 {
   const Eigen::Matrix3d bend = Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()).toRotationMatrix();
