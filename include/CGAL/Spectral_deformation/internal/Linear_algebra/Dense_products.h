@@ -77,45 +77,6 @@ inline void dense_product(bool transpose_a, const Const_matrix_ref& A, bool tran
 #endif
 }
 
-// Runs OpenBLAS on one thread for its lifetime when enabled, and does
-// nothing otherwise. OpenBLAS's threads keep a core busy waiting for work
-// for a while after each call: between the many small products of an
-// iteration they took the core from the other threads (a two-thread sparse
-// solve ran at one-thread speed), and the tall products, bound by memory,
-// gained little from them. Callers split their work with
-// `threaded_dense_product()` instead.
-//
-// The OpenBLAS thread count is a setting of the whole process: while an
-// enabled object lives, other threads calling OpenBLAS run single-threaded
-// too, and the count is restored by the destructor. The package enables it
-// only when a traits object was asked to (`set_process_wide_tuning(true)`,
-// see Memory/Process_wide_tuning.h).
-class Single_threaded_blas
-{
-public:
-#ifdef CGAL_SSMD_USE_OPENBLAS
-  explicit Single_threaded_blas(bool enabled) : m_threads(enabled ? openblas_get_num_threads() : 1)
-  {
-    if(m_threads > 1)
-      openblas_set_num_threads(1);
-  }
-  ~Single_threaded_blas()
-  {
-    if(m_threads > 1)
-      openblas_set_num_threads(m_threads);
-  }
-#else
-  explicit Single_threaded_blas(bool) {}
-#endif
-  Single_threaded_blas(const Single_threaded_blas&) = delete;
-  Single_threaded_blas& operator=(const Single_threaded_blas&) = delete;
-
-#ifdef CGAL_SSMD_USE_OPENBLAS
-private:
-  int m_threads;
-#endif
-};
-
 // Whether the linked BLAS runs threads of its own that wait for work by
 // spinning: OpenBLAS's pthreads build (the one Debian installs by default)
 // with more than one thread.
@@ -129,45 +90,67 @@ inline bool blas_runs_spinning_threads()
 #endif
 }
 
-// Keeps the OpenMP teams that the calling thread starts to one thread for
-// its lifetime when the linked OpenBLAS runs its own threads (its pthreads
-// build, the one Debian installs by default, with more than one thread) and
-// the BLAS was not made single-threaded (`Single_threaded_blas`). OpenBLAS's
+// Gives the cores to one pool of threads for its lifetime: OpenBLAS's idle
 // threads wait for work spinning on `sched_yield()` for some 0.1 s after each
-// call; between the products of an eigensolver, OpenMP teams running beside
-// them got a fraction of the cores, and their barriers waited for threads
-// that were not scheduled: the exact basis of a 13,500-vertex region took
-// 1.2-2.7 s, against 0.6-0.7 s with either the BLAS or the OpenMP teams on
-// one thread. Only the calling thread's setting changes (`nthreads-var`
-// is a per-thread setting of OpenMP); other threads of the program and the
-// BLAS are untouched. The BLAS keeps its threads for the dense products.
-class Openmp_teams_beside_threaded_blas
+// call, and OpenMP teams running beside them got a fraction of the cores,
+// their barriers waiting for threads that were not scheduled (a two-thread
+// sparse solve ran at one-thread speed; the exact basis of a 13,500-vertex
+// region took 1.2-2.7 s, against 0.6-0.7 s with either pool on one thread).
+//
+// - With `process_wide_tuning`, OpenBLAS runs on one thread and the OpenMP
+//   teams do the parallel work (callers split their tall products with
+//   `threaded_dense_product()`; bound by memory, they gained little from
+//   OpenBLAS's threads). The OpenBLAS thread count is a setting of the whole
+//   process: other threads calling OpenBLAS meanwhile run single-threaded
+//   too. The package does this only when a traits object was asked to
+//   (`set_process_wide_tuning(true)`, see Memory/Process_wide_tuning.h).
+// - Otherwise, beside a BLAS with spinning threads, the OpenMP teams that
+//   the calling thread starts run on one thread and OpenBLAS keeps its
+//   threads for the dense products. Only the calling thread's setting
+//   changes (`nthreads-var` is a per-thread setting of OpenMP).
+//
+// Both settings are restored by the destructor.
+class Threads_for_blas_or_openmp
 {
 public:
-  explicit Openmp_teams_beside_threaded_blas(bool blas_single_threaded)
+  explicit Threads_for_blas_or_openmp(bool process_wide_tuning)
   {
-#if defined(CGAL_SSMD_USE_OPENBLAS) && defined(_OPENMP)
-    if(!blas_single_threaded && blas_runs_spinning_threads() && !omp_in_parallel())
+#ifdef CGAL_SSMD_USE_OPENBLAS
+    if(process_wide_tuning)
     {
-      m_threads = omp_get_max_threads();
+      m_blas_threads = openblas_get_num_threads();
+      if(m_blas_threads > 1)
+        openblas_set_num_threads(1);
+      return;
+    }
+#ifdef _OPENMP
+    if(blas_runs_spinning_threads() && !omp_in_parallel())
+    {
+      m_openmp_threads = omp_get_max_threads();
       omp_set_num_threads(1);
     }
+#endif
 #else
-    (void)blas_single_threaded;
+    (void)process_wide_tuning;
 #endif
   }
-  ~Openmp_teams_beside_threaded_blas()
+  ~Threads_for_blas_or_openmp()
   {
-#if defined(CGAL_SSMD_USE_OPENBLAS) && defined(_OPENMP)
-    if(m_threads > 0)
-      omp_set_num_threads(m_threads);
+#ifdef CGAL_SSMD_USE_OPENBLAS
+    if(m_blas_threads > 1)
+      openblas_set_num_threads(m_blas_threads);
+#ifdef _OPENMP
+    if(m_openmp_threads > 0)
+      omp_set_num_threads(m_openmp_threads);
+#endif
 #endif
   }
-  Openmp_teams_beside_threaded_blas(const Openmp_teams_beside_threaded_blas&) = delete;
-  Openmp_teams_beside_threaded_blas& operator=(const Openmp_teams_beside_threaded_blas&) = delete;
+  Threads_for_blas_or_openmp(const Threads_for_blas_or_openmp&) = delete;
+  Threads_for_blas_or_openmp& operator=(const Threads_for_blas_or_openmp&) = delete;
 
 private:
-  int m_threads = 0;
+  int m_blas_threads = 0;
+  int m_openmp_threads = 0;
 };
 
 // dense_product() split over the OpenMP threads along the long dimension of
