@@ -453,6 +453,31 @@ public:
   /// the smooth deformed mesh) leaves the mesh unchanged.
   void deform(unsigned int iterations, double tolerance) { m_computation.deform(m_selection, iterations, tolerance); }
 
+  /// Refines the current positions of the ROI towards the optimum of the
+  /// as-rigid-as-possible energy (Sorkine and Alexa 2007) for the current
+  /// targets: the iteration of CGAL's `Surface_mesh_deformation` with
+  /// `ORIGINAL_ARAP`, on the detailed mesh, with the control vertices on
+  /// their targets and the vertices outside the ROI fixed, started from what
+  /// the mesh holds (usually the result of `deform()`, a far better start
+  /// than the rest shape). Each iteration fits a rotation per vertex one-ring
+  /// and back-substitutes with a sparse factorization of the region's
+  /// cotangent Laplacian: with `EXACT_CONSTRAINTS` the one `preprocess()`
+  /// made for the detail transfer; otherwise the first `refine()` of a
+  /// constraint set makes it. With `set_volume_preservation()`, each
+  /// iteration keeps the enclosed volume (as-rigid-as-possible deformation
+  /// alone lets a twisted tube collapse as its energy falls).
+  ///
+  /// Runs at most `max_iterations` iterations; stops earlier when one lowers
+  /// the energy by less than `tolerance` times its value. Returns whether the
+  /// mesh was updated; the energies, iterations and times are in
+  /// `refine_report()`. A failure (of `preprocess()`, a numerical one, a
+  /// negative or NaN `tolerance`) leaves the mesh unchanged. The next
+  /// `deform()` goes on from its own iteration, not from the refined shape.
+  bool refine(unsigned int max_iterations = 100, double tolerance = 1e-5)
+  {
+    return m_computation.refine(m_selection, max_iterations, tolerance);
+  }
+
   /// Puts the vertices of the ROI back at their initial positions, resets the
   /// targets of the control vertices to them, and restarts the iteration.
   /// The region (and its basis) is kept.
@@ -540,6 +565,8 @@ public:
   const Spectral_preprocess_report& preprocess_report() const { return m_computation.preprocess_report(); }
   /// What the last `deform()` did.
   const Spectral_deformation_report& deform_report() const { return m_computation.deform_report(); }
+  /// What the last `refine()` did.
+  const Spectral_refinement_report& refine_report() const { return m_computation.refine_report(); }
 
   /// The smooth rest position of `vd`, the second shape of the paper's
   /// pipeline figure: its low-pass reconstruction \f$ H H^\top M V \f$ with

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 
@@ -57,6 +58,33 @@ struct Spectral_deformation_report
   double solve_seconds = 0;         ///< rigid fits and iterations
   double detail_transfer_seconds = 0; ///< deformation transfer (spectral algorithms; 0 with `SPATIAL_DUAL_LAPLACIAN`)
   double total_seconds = 0;         ///< the whole `deform()` call, preprocessing excluded
+};
+
+/// \ingroup PkgSpectralSurfaceMeshDeformationRef
+/// What the last `refine()` of a `Spectral_surface_mesh_deformation` did.
+///
+/// The energy is the as-rigid-as-possible energy of Sorkine and Alexa (2007)
+/// of the region against its initial geometry, with the best rotation per
+/// vertex one-ring and the cotangent weights, divided by the weighted sum of
+/// the squared rest edge lengths: 0 for a rigid motion, about the mean
+/// squared relative edge distortion otherwise. Times are wall-clock seconds.
+struct Spectral_refinement_report
+{
+  bool success = false;             ///< whether the mesh was updated
+  std::string message;              ///< why not, when `success` is `false`
+  unsigned int iterations = 0;      ///< as-rigid-as-possible iterations run
+  double energy_before = 0;         ///< energy of the positions refined from (control vertices on their targets)
+  double energy_after = 0;          ///< energy of the positions written to the mesh
+  /// the last iteration lowered the energy by less than the tolerance times
+  /// its value (or the energy is 0)
+  bool converged = false;
+  /// whether each iteration kept the enclosed volume (see
+  /// `Spectral_parameters::set_volume_preservation()`)
+  bool volume_preserved = false;
+  std::vector<double> energies;     ///< the energy before the first iteration and after each
+  std::vector<double> seconds_at_iteration; ///< the time since the iterations started, at each entry of `energies`
+  double factorization_seconds = 0; ///< the sparse factorization, when the constraint set had none yet (0 with `EXACT_CONSTRAINTS` after `deform()`)
+  double total_seconds = 0;         ///< the whole `refine()` call, preprocessing excluded
 };
 
 } // namespace CGAL

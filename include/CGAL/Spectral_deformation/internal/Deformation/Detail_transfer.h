@@ -244,6 +244,18 @@ public:
     return result.allFinite();
   }
 
+  /// The Dirichlet system of `prepare_dirichlet()` for another right-hand
+  /// side: Q X = `rhs` with the prescribed vertices at
+  /// `prescribed_positions`, the volume kept when `preserves_volume()` (the
+  /// global step of the as-rigid-as-possible refinement). Returns false when
+  /// the system is not factored or the solve fails.
+  bool solve_dirichlet(const Eigen::MatrixXd& rhs, const Positions& prescribed_positions, Positions& result) const
+  {
+    if(!m_dirichlet_ready || !m_dirichlet.solve(rhs, prescribed_positions, result))
+      return false;
+    return !preserves_volume() || keep_volume(m_dirichlet, result);
+  }
+
   /// Soft policy: when `preserves_volume()`, moves the unanchored vertices
   /// of `positions` so that the surface encloses the rest volume (called
   /// last, after any correction of the result). Returns false when a solve

@@ -93,6 +93,7 @@ public:
 
   const Spectral_preprocess_report& preprocess_report() const { return m_preprocess_report; }
   const Spectral_deformation_report& deform_report() const { return m_deform_report; }
+  const Spectral_refinement_report& refine_report() const { return m_refine_report; }
 
   /// The ROI changed: the region is cut again by the next `preprocess()`,
   /// which puts the vertices that left it back at their initial positions.
@@ -239,6 +240,43 @@ public:
       region.pipeline.accept();
     });
     m_deform_report.total_seconds = seconds_since(start);
+  }
+
+  /// As-rigid-as-possible iterations from the current positions of the
+  /// region in the mesh, with the control vertices on their targets and the
+  /// fixed ring at rest; written to the mesh only when they succeed.
+  bool refine(VertexSelection& selection, unsigned int max_iterations, double tolerance)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    m_refine_report = Spectral_refinement_report();
+    if(!(tolerance >= 0))
+    {
+      m_refine_report.message = "refine(): the tolerance must be a number, 0 or more";
+      return false;
+    }
+    if(!preprocess(selection))
+    {
+      m_refine_report.message = "preprocess() failed: " + m_preprocess_report.message;
+      return false;
+    }
+    m_refine_report.success = reported(m_refine_report, [&] {
+      Region& region = *m_region;
+      const Positions targets = constrained_targets(selection);
+      Positions positions(static_cast<Eigen::Index>(region.vertices.size()), 3);
+      for(std::size_t i = 0; i < region.vertices.size(); ++i)
+      {
+        const Point p = selection.position(region.vertices[i]);
+        positions.row(static_cast<Eigen::Index>(i)) << CGAL::to_double(p[0]), CGAL::to_double(p[1]),
+            CGAL::to_double(p[2]);
+      }
+      if(!positions.allFinite())
+        throw Error(Error::INVALID_MESH, "refine(): a vertex of the region has a non-finite position");
+      region.pipeline.refine(region, m_constraints, targets, max_iterations, tolerance, positions,
+                             m_refine_report);
+      write_result(selection, positions);
+    });
+    m_refine_report.total_seconds = seconds_since(start);
+    return m_refine_report.success;
   }
 
 private:
@@ -416,6 +454,7 @@ private:
 
   Spectral_preprocess_report m_preprocess_report;
   Spectral_deformation_report m_deform_report;
+  Spectral_refinement_report m_refine_report;
 };
 
 } // namespace Deformation

@@ -8,7 +8,10 @@
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SPATIAL_PIPELINE_H
 
 #include <CGAL/Spectral_deformation/Deformation_reports.h>
+#include <CGAL/Spectral_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Arap_refinement.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Spatial_dual_laplacian_solver.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 
@@ -39,6 +42,7 @@ public:
   {
     m_solver.reset(new Spatial_dual_laplacian_solver<SparseSPDSolverTraits>(region.arrays));
     m_solver->set_process_wide_tuning(process_wide_tuning);
+    m_refinement.reset();
     m_has_solution = false;
   }
 
@@ -71,6 +75,40 @@ public:
     m_pending = result;
   }
 
+  /// Refines `positions` (the region's, one row per vertex) towards the
+  /// optimum of the as-rigid-as-possible energy, with the constrained
+  /// vertices of `set` on their `targets` (`refine_as_rigid_as_possible()`).
+  /// The dual Laplacian system has no use for the cotangent stiffness of the
+  /// region that the global step solves with: its first call factors it.
+  void refine(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
+              unsigned int max_iterations, double tolerance, Positions& positions,
+              Spectral_refinement_report& report)
+  {
+    typedef Spectral_deformation_error Error;
+    const auto start = std::chrono::steady_clock::now();
+    if(!m_refinement)
+    {
+      m_refinement.reset(new Refinement());
+      m_refinement->system.set_mesh(region.arrays, cotangent_stiffness(region.arrays));
+      m_refinement->local_step.initialize(m_refinement->system.stiffness(), region.arrays.positions);
+    }
+    std::vector<char> prescribed_flags(region.is_fixed.size(), 0);
+    for(int i : set.constrained)
+      prescribed_flags[static_cast<std::size_t>(i)] = 1;
+    Detail_transfer<SparseSPDSolverTraits>& system = m_refinement->system;
+    if(!system.prepare_dirichlet(prescribed_flags))
+      throw Error(Error::SOLVER_FAILURE, "the factorization of the refinement's system failed");
+    report.factorization_seconds = seconds_since(start);
+    Positions prescribed;
+    place_constrained(set, targets, prescribed, positions);
+    refine_as_rigid_as_possible(
+        m_refinement->local_step,
+        [&system, &prescribed](const Eigen::MatrixXd& rhs, Positions& out) {
+          return system.solve_dirichlet(rhs, prescribed, out);
+        },
+        positions, max_iterations, tolerance, report);
+  }
+
   void accept()
   {
     m_solution.swap(m_pending);
@@ -83,6 +121,12 @@ private:
   std::unique_ptr<Spatial_dual_laplacian_solver<SparseSPDSolverTraits>> m_solver;
   Positions m_solution, m_pending;
   bool m_has_solution = false;
+  struct Refinement
+  {
+    Detail_transfer<SparseSPDSolverTraits> system; // its Dirichlet system only
+    Arap_local_step local_step;
+  };
+  std::unique_ptr<Refinement> m_refinement;
 };
 
 } // namespace Deformation

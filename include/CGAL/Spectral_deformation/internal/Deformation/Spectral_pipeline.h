@@ -13,6 +13,7 @@
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_in_region_order.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Arap_refinement.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_products.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
@@ -201,6 +202,34 @@ public:
     report.volume_preserved = m_detail.preserves_volume();
   }
 
+  /// Refines `positions` (the region's, one row per vertex) towards the
+  /// optimum of the as-rigid-as-possible energy of the detailed region, with
+  /// the constrained vertices of `set` on their `targets`
+  /// (`refine_as_rigid_as_possible()`). The global step back-substitutes with
+  /// the exact policy's factorization, which the soft policy makes now; the
+  /// volume is kept when the detail transfer keeps it.
+  void refine(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
+              unsigned int max_iterations, double tolerance, Positions& positions,
+              Spectral_refinement_report& report)
+  {
+    typedef Spectral_deformation_error Error;
+    const auto start = std::chrono::steady_clock::now();
+    if(!m_detail.prepare_dirichlet(prescribed_flags(region, set)))
+      throw Error(Error::SOLVER_FAILURE, "the factorization of the refinement's system failed");
+    report.factorization_seconds = seconds_since(start);
+    if(!m_local_step.initialized())
+      m_local_step.initialize(m_detail.stiffness(), region.arrays.positions);
+    Positions& prescribed = m_prescribed;
+    place_constrained(set, targets, prescribed, positions);
+    refine_as_rigid_as_possible(
+        m_local_step,
+        [this, &prescribed](const Eigen::MatrixXd& rhs, Positions& out) {
+          return m_detail.solve_dirichlet(rhs, prescribed, out);
+        },
+        positions, max_iterations, tolerance, report);
+    report.volume_preserved = m_detail.preserves_volume();
+  }
+
   /// The solves of each stage before the last in `deform()`.
   static constexpr unsigned int stage_iterations = 3;
 
@@ -371,6 +400,7 @@ private:
   Spectral_dual_laplacian_solver m_solver;
   Constraint_products m_constraint_products;
   Detail_transfer<SparseSPDSolverTraits> m_detail;
+  Arap_local_step m_local_step; // of the refinement, made by its first call
   Spectral_constraint_policy m_policy = EXACT_CONSTRAINTS;
   Eigen::MatrixXd m_coefficients, m_pending;
   // Buffers of a drag, kept between drags: on large meshes, fresh pages for

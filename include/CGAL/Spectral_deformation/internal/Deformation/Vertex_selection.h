@@ -159,6 +159,7 @@ public:
   const std::vector<char>& roi_flags() const { return m_is_roi; }
 
   void put_position(vertex_descriptor vd, const Point& p) const { put(m_vpm, vd, p); }
+  Point position(vertex_descriptor vd) const { return get(m_vpm, vd); }
 
   /// The ROI vertices and the targets of the control vertices back at their
   /// initial positions.
