@@ -267,6 +267,7 @@ struct Run_report
   bool approximate_eigensolve = false;
   CGAL::Spectral_preprocess_report preprocess;
   CGAL::Spectral_deformation_report deform;
+  CGAL::Spectral_refinement_report refinement; // when --refine
   double max_handle_residual = 0; // relative to the bounding-box diagonal of the mesh
 };
 
@@ -610,6 +611,13 @@ private:
     m_report.deform = deformation->deform_report();
     if(!m_report.deform.success)
       throw Tool_error("the deformation failed: " + m_report.deform.message);
+    if(m_options.refine_tolerance >= 0)
+    {
+      deformation->refine(m_options.refine_iterations, m_options.refine_tolerance);
+      m_report.refinement = deformation->refine_report();
+      if(!m_report.refinement.success)
+        throw Tool_error("the refinement failed: " + m_report.refinement.message);
+    }
   }
 
   void render(const Mesh& mesh, const std::vector<Eigen::Vector3d>& rest, const std::string& output_file)
@@ -684,12 +692,20 @@ private:
         std::to_string(pre.number_of_constrained_vertices) + " constrained vertices");
     row("solve", def.solve_seconds, std::to_string(def.iterations) + " iterations");
     row("detail transfer", def.detail_transfer_seconds);
+    const CGAL::Spectral_refinement_report& refinement = m_report.refinement;
+    if(refinement.success)
+      row("refinement", refinement.total_seconds, std::to_string(refinement.iterations) + " iterations");
     row("write result", m_report.write_seconds);
     if(m_options.render)
       row("render", m_report.render_seconds);
     m_info << "iterations: " << def.iterations << " ("
            << (def.converged ? "converged" : "stopped at the iteration cap") << ", last relative step "
            << std::setprecision(3) << def.last_step << ")\n";
+    if(refinement.success)
+      m_info << "refinement: " << refinement.iterations << " iterations ("
+             << (refinement.converged ? "converged" : "stopped at the iteration cap") << "), ARAP energy "
+             << std::setprecision(4) << refinement.energy_before << " -> " << refinement.energy_after
+             << (refinement.volume_preserved ? ", enclosed volume kept" : "") << "\n";
     if(def.stages > 1)
       m_info << "stages: " << def.stages << " (a handle turned by more than the stage angle)\n";
     if(m_options.volume_preservation && m_options.algorithm != Deformation_tool::Algorithm::SPATIAL)

@@ -51,6 +51,8 @@ struct Command_line_options
   bool volume_preservation = false; // the detail transfer keeps the enclosed volume
   unsigned int iterations = 10;
   double tolerance = 1e-4;
+  double refine_tolerance = -1;           // negative: no refinement after the deformation
+  unsigned int refine_iterations = 1000;  // the cap of the refinement
   double constraint_weight = 1.0;
   bool use_cache = true;
   bool render = false;
@@ -341,6 +343,19 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
       ->option_text("T")
       ->check(internal::expects("--tolerance", "a non-negative finite number",
                                 [](const std::string& v) { return internal::is_non_negative(v, true); }));
+  app.add_option("--refine", options.refine_tolerance,
+                 "after the deformation, refine it towards the optimum of the as-rigid-as-possible "
+                 "energy until an iteration lowers the energy by less than T times its value "
+                 "(e.g. 1e-5; 0 runs all --refine-iterations).")
+      ->option_text("T")
+      ->check(internal::expects("--refine", "a non-negative finite number",
+                                [](const std::string& v) { return internal::is_non_negative(v, true); }));
+  app.add_option("--refine-iterations", options.refine_iterations,
+                 "maximal number of iterations of --refine (default 1000).")
+      ->option_text("N")
+      ->check(internal::expects("--refine-iterations", "an integer from 1 to 100000", [](const std::string& v) {
+        return internal::is_count_at_least(v, 1, 100000);
+      }));
   app.add_option("--weight", options.constraint_weight,
                  "constraint weight of the reduced system (default 1).")
       ->option_text("W")
