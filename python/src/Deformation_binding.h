@@ -111,6 +111,31 @@ inline py::dict to_dict(const CGAL::Spectral_deformation_report& r)
   return d;
 }
 
+inline py::list to_list(const std::vector<double>& values)
+{
+  py::list list;
+  for(double x : values)
+    list.append(x);
+  return list;
+}
+
+inline py::dict to_dict(const CGAL::Spectral_refinement_report& r)
+{
+  py::dict d;
+  d["success"] = r.success;
+  d["message"] = r.message;
+  d["iterations"] = r.iterations;
+  d["energy_before"] = r.energy_before;
+  d["energy_after"] = r.energy_after;
+  d["converged"] = r.converged;
+  d["volume_preserved"] = r.volume_preserved;
+  d["energies"] = to_list(r.energies);
+  d["seconds_at_iteration"] = to_list(r.seconds_at_iteration);
+  d["factorization_seconds"] = r.factorization_seconds;
+  d["total_seconds"] = r.total_seconds;
+  return d;
+}
+
 // What the constructor takes besides the arrays.
 struct Deformation_settings
 {
@@ -295,6 +320,20 @@ public:
     return positions(m_mesh);
   }
 
+  // Unlike deform(), a failure is no exception: the library's refine()
+  // answers it (a negative or NaN tolerance included) with false and the
+  // reason in refine_report, and leaves the positions unchanged.
+  bool refine(unsigned int max_iterations, double tolerance)
+  {
+    bool success = false;
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(m_mutex);
+      visit([&](auto& d) { success = d.refine(max_iterations, tolerance); });
+    }
+    return success;
+  }
+
   void reset()
   {
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -309,6 +348,13 @@ public:
   }
 
   py::dict deform_report() { return to_dict(deform_report_struct()); }
+
+  py::dict refine_report()
+  {
+    py::dict result;
+    visit([&](auto& d) { result = to_dict(d.refine_report()); });
+    return result;
+  }
 
   void save_basis(const std::string& file)
   {

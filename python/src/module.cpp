@@ -349,6 +349,37 @@ ValueError
 RuntimeError
     When the deformation fails numerically (the positions are unchanged).
 )doc")
+      .def("refine", &Deformation_session::refine, py::arg("max_iterations") = 100, py::arg("tolerance") = 1e-5,
+           R"doc(
+Refines the current positions towards the as-rigid-as-possible optimum.
+
+Runs as-rigid-as-possible iterations (Sorkine and Alexa 2007, CGAL's
+ORIGINAL_ARAP) on the detailed mesh from the positions it holds, usually
+the result of deform(): the handles stay on their targets and the vertices
+outside roi fixed. The next deform() goes on from its own iteration, not
+from the refined shape. The GIL is released meanwhile.
+
+Parameters
+----------
+max_iterations : int
+    The largest number of iterations.
+tolerance : float
+    Stops when an iteration lowers the energy by less than tolerance times
+    its value (unitless); 0 runs all the iterations.
+
+Returns
+-------
+bool
+    Whether the positions were updated; the energies, iterations and times
+    are in refine_report.
+
+Raises
+------
+TypeError
+    When max_iterations is not a non-negative int. Any other failure (a
+    negative or NaN tolerance, a numerical one) returns False with the
+    reason in refine_report["message"] and leaves the positions unchanged.
+)doc")
       .def("reset", &Deformation_session::reset,
            "Puts the vertices back at their initial positions and the targets on them. Raises nothing.")
       .def_property_readonly("preprocess_report", &Deformation_session::preprocess_report,
@@ -356,6 +387,9 @@ RuntimeError
       .def_property_readonly("deform_report", &Deformation_session::deform_report,
                              "What the last deform() did, as a dict (times in seconds, residuals in the unit of "
                              "the mesh).")
+      .def_property_readonly("refine_report", &Deformation_session::refine_report,
+                             "What the last refine() did, as a dict (times in seconds; energies: the unitless "
+                             "as-rigid-as-possible energy before the first iteration and after each, a list).")
       .def("save_basis",
            [](Deformation_session& self, const py::object& file) { self.save_basis(path_string(file)); },
            py::arg("file"),

@@ -80,7 +80,7 @@ def test_stub_signatures_are_the_module_signatures():
                 assert own == [n for n in names if n in own], (name, own)
             assert {p[0] for node in nodes for p in parameters(node)} == set(names), name
         checked += 1
-    assert checked == 13
+    assert checked == 14
     public = {n for n in dir(_ssmd) if not n.startswith("_") and callable(getattr(_ssmd, n))
               and not isinstance(getattr(_ssmd, n), type)}
     assert public <= set(functions), public - set(functions)
@@ -91,7 +91,7 @@ def test_stub_signatures_are_the_module_signatures():
 
 def documented_functions():
     yield ssmd.Deformation.__init__
-    for name in ("set_targets", "translate", "rotate", "deform", "save_basis", "load_basis"):
+    for name in ("set_targets", "translate", "rotate", "deform", "refine", "save_basis", "load_basis"):
         yield getattr(ssmd.Deformation, name)
     for name in ("manifold_harmonics", "from_file", "to_file", "read_selection", "read_handle_transformation",
                  "mesh_arrays", "progress_bar"):
@@ -129,6 +129,8 @@ def test_mypy_accepts_the_documented_calls_and_refuses_a_misspelt_option(tmp_pat
                              progress=ssmd.progress_bar())
         d.rotate([1.0, 0.0, 0.0, 0.0], center=[0, 0, 0])
         W: np.ndarray = d.deform(iterations=5)
+        refined: bool = d.refine(50, tolerance=0.0)
+        energies = d.refine_report["energies"]
         values, basis = ssmd.manifold_harmonics(V, F, 10)
         values, basis, mass = ssmd.manifold_harmonics(V, F, 10, mass=True)
         values, basis = ssmd.manifold_harmonics((V, F), m=10)
