@@ -433,7 +433,8 @@ def test_no_reference_or_memory_leak_over_1000_calls(tube_mesh):
         for i in range(count):
             d.set_targets(V[handles] + [0.0, 0.001 * (i % 7), 0.0])
             d.deform(iterations=2)
-            d.deform_report, d.preprocess_report, d.targets, d.vertices
+            d.refine(1)
+            d.deform_report, d.preprocess_report, d.refine_report, d.targets, d.vertices
             ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=8, algorithm="spatial") if i % 50 == 0 else None
             try:
                 d.set_targets(np.full((len(handles), 3), np.nan))
@@ -454,3 +455,130 @@ def test_no_reference_or_memory_leak_over_1000_calls(tube_mesh):
 
 def test_version():
     assert ssmd.__version__.count(".") == 2
+
+
+def arap_energy(rest, deformed, F):
+    """The as-rigid-as-possible energy of the refinement report, evaluated
+    here: the best rotation per vertex one-ring, the absolute cotangent
+    weights, divided by the weighted sum of the squared rest edge lengths."""
+    n = len(rest)
+    heads, tails, weights = [], [], []
+    for k in range(3):
+        a, b, c = F[:, k], F[:, (k + 1) % 3], F[:, (k + 2) % 3]
+        u, v = rest[a] - rest[c], rest[b] - rest[c]
+        cotangent = np.einsum("ij,ij->i", u, v) / np.linalg.norm(np.cross(u, v), axis=1)
+        heads += [a, b]
+        tails += [b, a]
+        weights += [cotangent / 2, cotangent / 2]
+    keys, inverse = np.unique(np.concatenate(heads) * n + np.concatenate(tails), return_inverse=True)
+    w = np.abs(np.bincount(inverse, weights=np.concatenate(weights)))
+    i, j = keys // n, keys % n
+    e, d = rest[i] - rest[j], deformed[i] - deformed[j]
+    covariance = np.zeros((n, 3, 3))
+    np.add.at(covariance, i, w[:, None, None] * e[:, :, None] * d[:, None, :])
+    U, _, Vt = np.linalg.svd(covariance)
+    U[np.linalg.det(Vt.transpose(0, 2, 1) @ U.transpose(0, 2, 1)) < 0, :, 2] *= -1
+    R = Vt.transpose(0, 2, 1) @ U.transpose(0, 2, 1)
+    residual = d - np.einsum("kab,kb->ka", R[i], e)
+    return np.sum(w * np.einsum("ij,ij->i", residual, residual)) / np.sum(w * np.einsum("ij,ij->i", e, e))
+
+
+def test_refine_lowers_the_arap_energy_of_the_deformed_tube(tube_mesh):
+    """Every vertex in the region, both end rings handles: the energies of
+    the report are those of the positions before and after, they never rise,
+    and the handles stay on their targets."""
+    V, F, _, _ = tube_mesh
+    handles = np.concatenate([np.arange(20), np.arange(len(V) - 20, len(V))])
+    targets = V[handles].copy()
+    targets[20:] = bent_targets(V, handles[20:])
+    d = ssmd.Deformation(V, F, handles=handles, m=30)
+    d.set_targets(targets)
+    W = d.deform(iterations=6, tolerance=0.0)
+    assert d.refine(50, 0) is True
+    R = d.vertices
+    report = d.refine_report
+    assert report["success"] and report["message"] == ""
+    assert report["iterations"] == 50 and not report["volume_preserved"]
+    energies, seconds = report["energies"], report["seconds_at_iteration"]
+    assert isinstance(energies, list) and isinstance(seconds, list)
+    assert len(energies) == len(seconds) == 51
+    assert energies[0] == report["energy_before"] and energies[-1] == report["energy_after"]
+    assert all(b <= a * (1 + 1e-12) for a, b in zip(energies, energies[1:]))
+    assert all(b >= a for a, b in zip(seconds, seconds[1:]))
+    assert report["energy_after"] < 0.9 * report["energy_before"]
+    assert report["total_seconds"] >= seconds[-1] >= 0
+    assert 0 <= report["factorization_seconds"] <= report["total_seconds"]
+    assert report["energy_before"] == pytest.approx(arap_energy(V, W, F), rel=1e-9)
+    assert report["energy_after"] == pytest.approx(arap_energy(V, R, F), rel=1e-9)
+    assert np.max(np.abs(R[handles] - targets)) <= 1e-12
+    assert np.max(np.linalg.norm(R - W, axis=1)) > 1e-3
+    # The report is a copy: changing it changes nothing.
+    report["energies"].clear()
+    assert len(d.refine_report["energies"]) == 51
+    # The positions refined are the start of the next refinement.
+    assert d.refine(0, 0.0)
+    assert d.refine_report["iterations"] == 0 and d.refine_report["energies"] == [report["energy_after"]]
+    assert np.array_equal(d.vertices, R)
+
+
+@pytest.mark.parametrize("algorithm,policy", [("spectral", "exact"), ("spectral", "soft"), ("spatial", "exact")])
+def test_refine_after_each_algorithm(tube_mesh, algorithm, policy):
+    """The handles land on their targets (with the soft policy too), the
+    vertices outside the region stay, the energy falls; the next deform()
+    goes on from its own iteration."""
+    V, F, fixed, handles = tube_mesh
+    targets = bent_targets(V, handles)
+
+    def deformed():
+        d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=30, algorithm=algorithm, policy=policy)
+        d.set_targets(targets)
+        return d, d.deform(iterations=6, tolerance=0.0)
+
+    d, W = deformed()
+    assert d.refine(40, 1e-9)
+    R = d.vertices
+    report = d.refine_report
+    assert 1 <= report["iterations"] <= 40 and len(report["energies"]) == report["iterations"] + 1
+    assert report["energy_after"] < report["energy_before"]
+    assert np.max(np.abs(R[handles] - targets)) <= 1e-12
+    assert np.array_equal(R[fixed], V[fixed])
+    # The spectral algorithm with the exact policy reuses the factorization
+    # of its detail transfer; the others factor once per set of handles.
+    assert d.refine(5, 0.0)
+    if algorithm == "spatial" or policy == "soft":
+        assert report["factorization_seconds"] > d.refine_report["factorization_seconds"]
+    other, _ = deformed()
+    assert np.array_equal(d.deform(iterations=2, tolerance=0.0), other.deform(iterations=2, tolerance=0.0))
+
+
+def test_refine_keeps_the_volume_on_demand():
+    V, F = icosphere(3)
+    fixed = np.flatnonzero(V[:, 2] < -0.8)
+    handles = np.flatnonzero(V[:, 2] > 0.8)
+
+    def volume(W):
+        a, b, c = W[F[:, 0]], W[F[:, 1]], W[F[:, 2]]
+        return np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6
+
+    d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=30, volume_preservation=True)
+    d.translate([0.0, 0.0, -0.4])
+    d.deform()
+    assert d.refine(30, 0.0)
+    assert d.refine_report["volume_preserved"]
+    assert abs(volume(d.vertices) / volume(V) - 1) < 1e-9
+
+
+def test_failed_refine_returns_false_and_changes_nothing(tube_mesh):
+    V, F, fixed, handles = tube_mesh
+    d = ssmd.Deformation(V, F, fixed=fixed, handles=handles, m=20)
+    d.set_targets(bent_targets(V, handles))
+    W = d.deform(iterations=4)
+    for tolerance in (-1.0, float("nan")):
+        assert d.refine(10, tolerance) is False
+        report = d.refine_report
+        assert not report["success"] and "tolerance" in report["message"]
+        assert report["iterations"] == 0 and report["energies"] == []
+        assert np.array_equal(d.vertices, W)
+    with pytest.raises(TypeError):
+        d.refine(-1)
+    assert np.array_equal(d.vertices, W)
