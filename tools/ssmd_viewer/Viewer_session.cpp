@@ -122,6 +122,10 @@ struct Session::Impl
   std::vector<char> in_region;
   std::array<double, 3> handle_centroid{};
   Clock::time_point last_progress;
+  // The refinement since the last drag, selection or reset: iterations run
+  // and the energy before the first of them.
+  unsigned int refined_iterations = 0;
+  double refine_energy_start = 0;
 
   Impl(std::shared_ptr<const Loaded_mesh> m, const Session_options& o, Sender s)
     : loaded(std::move(m)), options(o), send(std::move(s)), mesh(loaded->mesh)
@@ -159,7 +163,9 @@ struct Session::Impl
                {"faces", f},
                {"frequencies", options.frequencies},
                {"iterations_per_drag", options.iterations_per_drag},
-               {"rotation_patches", options.rotation_patches}});
+               {"rotation_patches", options.rotation_patches},
+               {"refine_iterations", options.refine_iterations},
+               {"refine_max_iterations", options.refine_max_iterations}});
     send_binary(std::move(data));
   }
 
@@ -224,6 +230,7 @@ struct Session::Impl
     // The mesh goes back to its rest shape: a new selection starts a new edit.
     if(deformation)
       deformation->reset();
+    refined_iterations = 0;
     const bool same_region = deformation && flags == in_region;
     if(!same_region)
     {
@@ -274,8 +281,9 @@ struct Session::Impl
                {"preprocess_seconds", seconds_since(start)}});
   }
 
-  void send_region_positions(const char* type, double deform_seconds, const Clock::time_point& start,
-                             unsigned int iterations)
+  // Sends `header` with the region's count and the server's time, then the
+  // positions of the region.
+  void send_region_positions(Json header, const Clock::time_point& start)
   {
     std::vector<float> positions(3 * region.size());
     for(std::size_t j = 0; j < region.size(); ++j)
@@ -287,13 +295,27 @@ struct Session::Impl
     std::string data(4 * positions.size(), '\0');
     if(!positions.empty())
       std::memcpy(&data[0], positions.data(), data.size());
-    send_json({{"type", type},
-               {"indices", "region"},
-               {"count", region.size()},
-               {"iterations", iterations},
-               {"deform_seconds", deform_seconds},
-               {"server_seconds", seconds_since(start)}});
+    header["indices"] = "region";
+    header["count"] = region.size();
+    header["server_seconds"] = seconds_since(start);
+    send_json(header);
     send_binary(std::move(data));
+  }
+
+  static Json deformed_header(unsigned int iterations, double deform_seconds)
+  {
+    return {{"type", "deformed"}, {"iterations", iterations}, {"deform_seconds", deform_seconds}};
+  }
+
+  // An optional integer of a command in [1, `max`].
+  static unsigned int count_in_range(const Json& command, const char* key, unsigned int fallback, long long max)
+  {
+    auto it = command.find(key);
+    if(it == command.end())
+      return fallback;
+    if(!it->is_number_integer() || it->get<long long>() < 1 || it->get<long long>() > max)
+      throw Request_error(std::string("\"") + key + "\" must be an integer in [1, " + std::to_string(max) + "]");
+    return static_cast<unsigned int>(it->get<long long>());
   }
 
   void drag(const Json& command)
@@ -304,13 +326,7 @@ struct Session::Impl
     const std::array<double, 3> t = finite_numbers<3>(command, "translation", {0, 0, 0});
     std::array<double, 4> q = finite_numbers<4>(command, "rotation", {1, 0, 0, 0});
     const std::array<double, 3> c = finite_numbers<3>(command, "center", handle_centroid);
-    unsigned int iterations = options.iterations_per_drag;
-    if(auto it = command.find("iterations"); it != command.end())
-    {
-      if(!it->is_number_integer() || it->get<long long>() < 1 || it->get<long long>() > 100)
-        throw Request_error("\"iterations\" must be an integer in [1, 100]");
-      iterations = static_cast<unsigned int>(it->get<long long>());
-    }
+    const unsigned int iterations = count_in_range(command, "iterations", options.iterations_per_drag, 100);
     const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     if(!(norm > 1e-12) || !std::isfinite(norm))
       throw Request_error("\"rotation\" must be a nonzero quaternion [w, x, y, z]");
@@ -329,11 +345,52 @@ struct Session::Impl
         target[r] = c[r] + R[r][0] * d[0] + R[r][1] * d[1] + R[r][2] * d[2] + t[r];
       deformation->set_target_position(Vertex_index(i), Point(target[0], target[1], target[2]));
     }
+    // New targets: a refinement starts again from the deformation.
+    refined_iterations = 0;
     deformation->deform(iterations, 0.0);
     const CGAL::Spectral_deformation_report& report = deformation->deform_report();
     if(!report.success)
       throw Request_error("the deformation failed: " + report.message);
-    send_region_positions("deformed", report.total_seconds, start, report.iterations);
+    send_region_positions(deformed_header(report.iterations, report.total_seconds), start);
+  }
+
+  // One chunk of as-rigid-as-possible iterations from the positions the mesh
+  // holds (the last drag's result or the previous chunk's), at most
+  // `refine_max_iterations` since the last drag; the page sends the next
+  // chunk's command when the answer says the refinement is not done.
+  void refine(const Json& command)
+  {
+    const Clock::time_point start = Clock::now();
+    if(!deformation)
+      throw Request_error("no selection: send \"select\" first");
+    const unsigned int chunk = count_in_range(command, "iterations", options.refine_iterations, 100);
+    double tolerance = options.refine_tolerance;
+    if(auto it = command.find("tolerance"); it != command.end())
+    {
+      if(!it->is_number() || !(it->get<double>() >= 0) || !std::isfinite(it->get<double>()))
+        throw Request_error("\"tolerance\" must be a finite number, 0 or more");
+      tolerance = it->get<double>();
+    }
+    const unsigned int left =
+        options.refine_max_iterations > refined_iterations ? options.refine_max_iterations - refined_iterations : 0;
+    if(!deformation->refine(std::min(chunk, left), tolerance))
+      throw Request_error("the refinement failed: " + deformation->refine_report().message);
+    const CGAL::Spectral_refinement_report& report = deformation->refine_report();
+    if(refined_iterations == 0)
+      refine_energy_start = report.energy_before;
+    refined_iterations += report.iterations;
+    const bool done = report.converged || refined_iterations >= options.refine_max_iterations;
+    send_region_positions({{"type", "refined"},
+                           {"iterations", report.iterations},
+                           {"total_iterations", refined_iterations},
+                           {"max_iterations", options.refine_max_iterations},
+                           {"energy_start", refine_energy_start},
+                           {"energy_before", report.energy_before},
+                           {"energy_after", report.energy_after},
+                           {"converged", report.converged},
+                           {"done", done},
+                           {"refine_seconds", report.total_seconds}},
+                          start);
   }
 
   void reset()
@@ -342,7 +399,8 @@ struct Session::Impl
     if(!deformation)
       throw Request_error("no selection: nothing to reset");
     deformation->reset();
-    send_region_positions("deformed", 0, start, 0);
+    refined_iterations = 0;
+    send_region_positions(deformed_header(0, 0), start);
   }
 
   void save()
@@ -377,6 +435,8 @@ struct Session::Impl
         select(command);
       else if(type == "drag")
         drag(command);
+      else if(type == "refine")
+        refine(command);
       else if(type == "reset")
         reset();
       else if(type == "save")

@@ -39,6 +39,13 @@ struct Session_options
   // Rotation patches of the iteration (0: one rotation per dual vertex);
   // see set_rotation_patches() of the deformation class.
   std::size_t rotation_patches = 1000;
+  // The "refine" command: as-rigid-as-possible iterations per command (the
+  // page asks for one chunk after the other and shows each), the most run
+  // since the last drag, and the tolerance of refine() (an iteration that
+  // lowers the energy by less than this fraction of it ends the refinement).
+  unsigned int refine_iterations = 5;
+  unsigned int refine_max_iterations = 500;
+  double refine_tolerance = 1e-5;
 };
 
 // A message to the page: JSON text, or binary data announced by the JSON

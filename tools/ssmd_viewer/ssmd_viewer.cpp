@@ -240,6 +240,18 @@ int main(int argc, char** argv)
                  "rotations of the iteration fitted per patch of about 1/K of the region (0: per dual vertex)")
       ->capture_default_str()
       ->check(CLI::Range(std::size_t(0), std::size_t(100000000)));
+  app.add_option("--refine-iterations", options.session.refine_iterations,
+                 "as-rigid-as-possible iterations per update of the Refine button")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
+  app.add_option("--refine-max-iterations", options.session.refine_max_iterations,
+                 "as-rigid-as-possible iterations of Refine at most, since the last drag")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--refine-tolerance", options.session.refine_tolerance,
+                 "Refine stops when an iteration lowers the energy by less than this fraction of it")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--max-message", options.max_message_bytes, "largest command accepted, in bytes")
       ->capture_default_str();
   app.add_option("--web-dir", options.web_dir, "folder of index.html and main.js")->capture_default_str();
