@@ -60,10 +60,14 @@ let center = new THREE.Vector3();       // the handle's rest centroid
 let announced = null;                   // the JSON message announcing the next binary one
 let inFlight = false, dirty = false;    // at most one drag waits for its reply
 let sentAt = 0;
+let dragged = false;                    // the shape is a drag's result: Refine may start
+let refinement = null;                  // the running refinement: { stopped }; null when none runs
+let refined = false;                    // the status line shows a refinement
+let preparedStatus = '';                // the status line after Prepare, shown again by a drag after a refinement
 const undoStack = [];
 const replyTimes = [];                  // arrival times of recent replies, for updates per second
 const waiters = [];                     // test hook: resolved by the next message of a type
-const stats = { deformMs: 0, serverMs: 0, roundTripMs: 0, updatesPerSecond: 0, replies: 0 };
+const stats = { deformMs: 0, serverMs: 0, roundTripMs: 0, updatesPerSecond: 0, replies: 0, refinedChunks: 0 };
 
 // Normals are recomputed once per frame, not once per reply: replies may
 // come faster than frames.
@@ -102,19 +106,22 @@ function onJson(data) {
     region = Uint32Array.from(data.region);
     center.fromArray(data.center);
     $('progress').value = 1;
-    $('stage').textContent = `${region.length} region vertices, prepared in ${(1000 * data.preprocess_seconds).toFixed(0)} ms` +
+    preparedStatus = `${region.length} region vertices, prepared in ${(1000 * data.preprocess_seconds).toFixed(0)} ms` +
       (data.basis_computed ? ` (basis ${(1000 * data.basis_seconds).toFixed(0)} ms)` : '');
+    $('stage').textContent = preparedStatus;
     placeGizmo(new THREE.Vector3(), new THREE.Quaternion());
     gizmo.attach(handleObject);
     undoStack.length = 0;
     inFlight = dirty = false;
+    cancelRefinement(false);
     message('');
   } else if (data.type === 'error') {
     message(`server: ${data.message}`);
     if (data.request === 'drag') inFlight = false;
+    if (data.request === 'refine' && refinement) finishRefinement(null);
     if (data.request === 'select') $('progress').value = 0;
   } else {
-    announced = data; // mesh, deformed, off: the data follow in a binary message
+    announced = data; // mesh, deformed, refined, off: the data follow in a binary message
     return;
   }
   notify(data.type, data);
@@ -125,6 +132,7 @@ function onBinary(buffer) {
   announced = null;
   if (header.type === 'mesh') setMesh(header, buffer);
   else if (header.type === 'deformed') applyDeformed(header, buffer);
+  else if (header.type === 'refined') applyRefined(header, buffer);
   else if (header.type === 'off') download(header.name, buffer);
   notify(header.type, header);
 }
@@ -151,7 +159,8 @@ function setMesh(header, buffer) {
   $('title').textContent = `${header.name}: ${n.toLocaleString('en')} vertices`;
 }
 
-function applyDeformed(header, buffer) {
+// The positions of the region vertices, in the order of `region`.
+function applyPositions(buffer) {
   const values = new Float32Array(buffer);
   const position = geometry.attributes.position;
   for (let j = 0; j < region.length; ++j) {
@@ -162,6 +171,11 @@ function applyDeformed(header, buffer) {
   }
   position.needsUpdate = true;
   normalsStale = true;
+}
+
+function applyDeformed(header, buffer) {
+  applyPositions(buffer);
+  $('refine').disabled = !dragged;
   const now = performance.now();
   replyTimes.push(now);
   while (replyTimes.length > 0 && replyTimes[0] < now - 1000) replyTimes.shift();
@@ -175,6 +189,56 @@ function applyDeformed(header, buffer) {
     `updates  ${stats.updatesPerSecond} /s`;
   inFlight = false;
   if (dirty) sendDrag();
+}
+
+// --- refinement ----------------------------------------------------------------
+// Refine asks the server for a few as-rigid-as-possible iterations at a
+// time, shows each result, and asks again until the server says the
+// refinement is done (converged, or at its cap of iterations). A drag, a
+// reset or a new selection cancels it: the answer in flight is dropped,
+// the drag's answer follows. The button stops it too, after the chunk in
+// flight, whose result is shown.
+function startRefinement() {
+  if (!region || !dragged || refinement) return;
+  refinement = { stopped: false };
+  refined = true;
+  $('refine').textContent = 'Stop';
+  $('stage').textContent = 'refining…';
+  send({ type: 'refine' });
+}
+
+function stopRefinement() {
+  if (!refinement) return;
+  refinement.stopped = true;
+  $('refine').disabled = true; // until the chunk in flight is back
+}
+
+// Forgets the running refinement (its answer in flight is dropped).
+function cancelRefinement(enable) {
+  refinement = null;
+  $('refine').textContent = 'Refine';
+  $('refine').disabled = !enable;
+}
+
+function finishRefinement(header) {
+  cancelRefinement(dragged && region !== null);
+  notify('refinement', { ...(header || { failed: true }), type: 'refinement' });
+}
+
+const energyText = (e) => e.toExponential(3);
+
+function applyRefined(header, buffer) {
+  if (!refinement) return; // cancelled by a drag, a reset or a selection
+  applyPositions(buffer);
+  stats.refinedChunks += 1;
+  const state = header.done ? (header.converged ? ', converged' : `, stopped at ${header.max_iterations}`)
+    : refinement.stopped ? ', stopped' : '…';
+  $('stage').textContent = `ARAP energy ${energyText(header.energy_start)} → ${energyText(header.energy_after)}, ` +
+    `${header.total_iterations} iterations${state}`;
+  $('stats').textContent = `refine   ${(1000 * header.refine_seconds).toFixed(1)} ms (${header.iterations} iterations)\n` +
+    `server   ${(1000 * header.server_seconds).toFixed(1)} ms`;
+  if (header.done || refinement.stopped) finishRefinement(header);
+  else send({ type: 'refine' });
 }
 
 function download(name, buffer) {
@@ -410,6 +474,8 @@ function clearSelection() {
   for (const mode in selection) selection[mode].fill(0);
   gizmo.detach();
   region = null;
+  dragged = false;
+  cancelRefinement(false);
   undoStack.length = 0;
   commitSelectionChange(before);
   updateColors();
@@ -424,6 +490,8 @@ function indicesOf(flags) {
 function prepare() {
   gizmo.detach();
   region = null;
+  dragged = false;
+  cancelRefinement(false);
   geometry.attributes.position.array.set(rest);
   geometry.attributes.position.needsUpdate = true;
   geometry.computeVertexNormals();
@@ -484,6 +552,10 @@ const SETTLE_ITERATIONS = 10;
 let settlePending = false;
 function sendDrag(settle = false) {
   if (!region) return;
+  // A drag stops the refinement; Refine is enabled again by the drag's answer.
+  if (refinement) cancelRefinement(false);
+  if (refined) { $('stage').textContent = preparedStatus; refined = false; }
+  dragged = true;
   if (settle) settlePending = true;
   if (inFlight) { dirty = true; return; }
   const t = handleObject.position.clone().sub(center);
@@ -524,6 +596,8 @@ function undoLatest() {
 
 function reset() {
   if (!region) return;
+  dragged = false;
+  cancelRefinement(false);
   undoStack.length = 0;
   placeGizmo(new THREE.Vector3(), new THREE.Quaternion());
   send({ type: 'reset' });
@@ -534,6 +608,7 @@ $('prepare').onclick = prepare;
 $('undo').onclick = undo;
 $('undo-selection').onclick = undoSelection;
 $('reset').onclick = reset;
+$('refine').onclick = () => (refinement ? stopRefinement() : startRefinement());
 $('save').onclick = () => send({ type: 'save' });
 for (const input of document.querySelectorAll('input[name=gizmo]'))
   input.onchange = () => gizmo.setMode(input.value);
@@ -618,6 +693,11 @@ window.ssmdViewer = {
     return reply;
   },
   reset() { const reply = next('deformed', 'error'); reset(); return reply; },
+  // Runs Refine to its end; resolves with the last answer's header (type
+  // 'refinement'), or { type: 'refinement', failed: true } after an error.
+  refine() { const end = next('refinement'); $('refine').click(); return end; },
+  refineEnabled: () => !$('refine').disabled,
+  status: () => $('stage').textContent,
   animateHandle,
   positions: () => Array.from(geometry.attributes.position.array),
   restPositions: () => Array.from(rest),
