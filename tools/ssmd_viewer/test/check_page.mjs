@@ -5,7 +5,8 @@
 // the selection tools (the box on the visible side or through the mesh, the
 // brush, the selection's undo) against visibility computed here by ray
 // casting, selects a region, a handle and fixed vertices with the page's own
-// box selection, drags the handle, checks the mesh the page shows, measures
+// box selection, drags the handle, checks the mesh the page shows, refines
+// it with the Refine button (and stops a refinement with a drag), measures
 // the updates per second while the handle moves, and saves a screenshot.
 //
 //   node check_page.mjs URL NODE_PACKAGES_DIR SCREENSHOT.png
@@ -234,6 +235,7 @@ try {
   const ready = await page.evaluate(() => window.ssmdViewer.prepare());
   check(ready.type === 'ready', `the selection is prepared (${ready.message || ready.region.length + ' region vertices'})`);
   if (ready.type !== 'ready') throw new Error('cannot go on without a region');
+  check(!(await page.evaluate(() => window.ssmdViewer.refineEnabled())), 'Refine is disabled before a drag');
 
   const t = [-0.12 * radius, -0.06 * radius, -0.15 * radius];
   const reply = await page.evaluate((t) => window.ssmdViewer.drag(t), t);
@@ -253,6 +255,52 @@ try {
   check(handleError < 1e-3 * radius, `the handle vertices moved with the handle (error ${handleError.toExponential(2)})`);
   check(fixedError < 1e-5 * radius, `the fixed vertices stayed (error ${fixedError.toExponential(2)})`);
   check(outsideMoved === 0, 'the vertices outside the region stayed');
+
+  // Refine: chunks of iterations until done, the mesh updated after each.
+  check(await page.evaluate(() => window.ssmdViewer.refineEnabled()), 'Refine is enabled after a drag');
+  const chunksBefore = await page.evaluate(() => window.ssmdViewer.stats().refinedChunks);
+  const refinement = await page.evaluate(() => window.ssmdViewer.refine());
+  const chunks = (await page.evaluate(() => window.ssmdViewer.stats().refinedChunks)) - chunksBefore;
+  const refined = await page.evaluate(() => {
+    const v = window.ssmdViewer;
+    return { positions: v.positions(), status: v.status(), enabled: v.refineEnabled(),
+             label: document.querySelector('#refine').textContent };
+  });
+  let refinedHandleError = 0, refinedFixedError = 0, refinedOutsideMoved = 0, refinedMoved = 0;
+  const refinedMove = (i, k) => refined.positions[3 * i + k] - result.rest[3 * i + k];
+  for (const i of result.handle) for (let k = 0; k < 3; ++k) refinedHandleError = Math.max(refinedHandleError, Math.abs(refinedMove(i, k) - t[k]));
+  for (const i of result.fixed) for (let k = 0; k < 3; ++k) refinedFixedError = Math.max(refinedFixedError, Math.abs(refinedMove(i, k)));
+  for (let i = 0; i < result.rest.length / 3; ++i)
+    for (let k = 0; k < 3; ++k) {
+      if (!inRegion.has(i) && refinedMove(i, k) !== 0) ++refinedOutsideMoved;
+      refinedMoved = Math.max(refinedMoved, Math.abs(refined.positions[3 * i + k] - result.positions[3 * i + k]));
+    }
+  check(!refinement.failed && refinement.done && refinement.energy_after < refinement.energy_start &&
+        chunks >= 2 && refinement.total_iterations <= 5 * chunks && refinement.total_iterations > 5 * (chunks - 1),
+        `Refine runs in chunks of 5 iterations until done (${chunks} chunks, ${refinement.total_iterations} iterations, ` +
+        `energy ${refinement.energy_start?.toExponential(3)} -> ${refinement.energy_after?.toExponential(3)})`);
+  check(refinedMoved > 1e-5 * radius && refinedHandleError < 1e-3 * radius && refinedFixedError < 1e-5 * radius &&
+        refinedOutsideMoved === 0,
+        `the refined mesh is shown: the region moved by up to ${(refinedMoved / radius).toExponential(2)} radius, the handle ` +
+        `on its targets (error ${refinedHandleError.toExponential(2)}), the fixed vertices and the outside in place`);
+  check(/ARAP energy .* → .*, \d+ iterations, (converged|stopped at \d+)/.test(refined.status) &&
+        refined.enabled && refined.label === 'Refine',
+        `the status line shows the refinement ("${refined.status}"), the button is back`);
+  // A drag stops a refinement: its answer replaces the refined shape, and no
+  // chunk follows.
+  const stopped = await page.evaluate(async (t) => {
+    const v = window.ssmdViewer;
+    document.querySelector('#refine').click();
+    const label = document.querySelector('#refine').textContent;
+    const reply = await v.drag(t);
+    const positions = v.positions();
+    await new Promise((resolve) => setTimeout(resolve, 500));
+    return { label, type: reply.type, still: JSON.stringify(positions) === JSON.stringify(v.positions()),
+             status: v.status(), enabled: v.refineEnabled(), after: document.querySelector('#refine').textContent };
+  }, t);
+  check(stopped.label === 'Stop' && stopped.type === 'deformed' && stopped.still && stopped.enabled &&
+        stopped.after === 'Refine' && !stopped.status.startsWith('ARAP'),
+        'a drag stops the refinement: the mesh keeps the drag\'s answer, Refine is enabled again');
 
   check(!(await page.evaluate(() => window.ssmdViewer.antialias())),
         'under the software renderer (SwiftShader) the page draws without multisampling');

@@ -5,7 +5,9 @@
 unknown, out-of-range, non-finite and oversized commands, checks that each
 one is answered with an error and that the same connection then serves a
 correct selection and drag (handle moved by the translation, fixed vertices
-in place), a reset and a save.
+in place), a refinement in chunks (an energy that falls, the handle kept on
+its targets, the cap of iterations, a drag that starts it again), a reset and
+a save.
 
     check_protocol.py SSMD_VIEWER MESH
 
@@ -118,7 +120,8 @@ def expect_error(ws, payload, what, opcode=1):
 
 def main():
     viewer, mesh = sys.argv[1], sys.argv[2]
-    server = subprocess.Popen([viewer, mesh, "--port", "0", "--frequencies", "30", "--max-message", str(1 << 20)],
+    server = subprocess.Popen([viewer, mesh, "--port", "0", "--frequencies", "30", "--max-message", str(1 << 20),
+                               "--refine-iterations", "4", "--refine-max-iterations", "10"],
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         line = server.stdout.readline()
@@ -135,6 +138,8 @@ def main():
         check(" 101" in ws.status, f"handshake ({ws.status})")
         header = ws.json()
         check(header["type"] == "mesh", "the mesh is announced")
+        check(header.get("refine_iterations") == 4 and header.get("refine_max_iterations") == 10,
+              "the mesh header gives the refinement's chunk and cap")
         n, f = header["vertices"], header["faces"]
         opcode, data = ws.receive()
         check(opcode == 2 and len(data) == 12 * n + 12 * f, "the mesh follows as Float32 positions + Uint32 faces")
@@ -145,6 +150,7 @@ def main():
         expect_error(ws, '{"type": "explode"}', "an unknown type")
         expect_error(ws, '{"type": 7}', "a type that is not a string")
         expect_error(ws, '{"type": "drag", "translation": [1, 0, 0]}', "a drag before a selection")
+        expect_error(ws, '{"type": "refine"}', "a refinement before a selection")
         expect_error(ws, json.dumps({"type": "select", "roi": [0, 1], "handle": [n]}), "an index out of range")
         expect_error(ws, json.dumps({"type": "select", "roi": [-1], "handle": [0]}), "a negative index")
         expect_error(ws, json.dumps({"type": "select", "roi": [0.5], "handle": [0]}), "a fractional index")
@@ -211,6 +217,81 @@ def main():
             turn_error = max(turn_error, max(abs(positions[3 * where[v] + k] - target[k]) for k in range(3)))
         check(reply["type"] == "deformed" and turn_error < 1e-3 * radius,
               f"a turned handle lands on its targets (error {turn_error:.2e})")
+
+        # The refinement of the turned shape, chunk after chunk.
+        def turned_handle_error(positions):
+            error = 0
+            for v in handle:
+                x, y, z = (rest[3 * v + k] - c[k] for k in range(3))
+                target = (c[0] + math.cos(angle) * x - math.sin(angle) * y + t[0],
+                          c[1] + math.sin(angle) * x + math.cos(angle) * y + t[1], c[2] + z + t[2])
+                error = max(error, max(abs(positions[3 * where[v] + k] - target[k]) for k in range(3)))
+            return error
+
+        for payload, what in [('{"type": "refine", "iterations": 0}', "zero refinement iterations"),
+                              ('{"type": "refine", "iterations": 101}', "too many refinement iterations"),
+                              ('{"type": "refine", "iterations": 1.5}', "fractional refinement iterations"),
+                              ('{"type": "refine", "tolerance": -1}', "a negative tolerance"),
+                              ('{"type": "refine", "tolerance": "small"}', "a tolerance given as a string")]:
+            expect_error(ws, payload, what)
+        dragged = positions
+        ws.send(json.dumps({"type": "refine", "iterations": 3, "tolerance": 0}))
+        reply = ws.reply()
+        check(reply["type"] == "refined" and reply["count"] == len(region) and reply["iterations"] == 3
+              and reply["total_iterations"] == 3 and reply["max_iterations"] == 10 and not reply["done"],
+              f"a refinement chunk is answered with the region ({reply.get('iterations')} iterations)")
+        opcode, data = ws.receive()
+        check(opcode == 2 and len(data) == 12 * len(region), "its positions follow")
+        positions = struct.unpack(f"<{3 * len(region)}f", data)
+        check(reply["energy_start"] == reply["energy_before"] and 0 < reply["energy_after"] < reply["energy_before"],
+              f"the energy falls ({reply['energy_before']:.4e} -> {reply['energy_after']:.4e})")
+        moved = max(abs(a - b) for a, b in zip(positions, dragged))
+        handle_error = turned_handle_error(positions)
+        fixed_error = max(abs(positions[3 * where[v] + k] - rest[3 * v + k]) for v in fixed for k in range(3))
+        check(moved > 1e-5 * radius and handle_error < 1e-3 * radius and fixed_error < 1e-5 * radius,
+              f"the region moved by up to {moved:.2e}, the handle stays on its targets (error {handle_error:.2e}), "
+              f"the fixed vertices stay (error {fixed_error:.2e})")
+        check(reply["refine_seconds"] > 0 and reply["server_seconds"] >= reply["refine_seconds"],
+              "the refinement's timings are reported")
+        chunks = [reply]
+        while not chunks[-1]["done"] and len(chunks) < 50:
+            ws.send('{"type": "refine"}')
+            chunks.append(ws.reply())
+            ws.receive()
+        last = chunks[-1]
+        check(all(r["type"] == "refined" for r in chunks) and last["done"]
+              and (last["converged"] or last["total_iterations"] == 10) and last["total_iterations"] <= 10
+              and all(r["iterations"] <= 4 for r in chunks[1:]),
+              f"chunks of at most 4 iterations until done ({last['total_iterations']} iterations, "
+              f"converged {last['converged']})")
+        # (The energy weighs with the signed cotangent weights: on a mesh with
+        # obtuse angles it may fall below 0.)
+        slack = 1e-9 * abs(reply["energy_start"])
+        check(all(r["energy_start"] == reply["energy_start"] for r in chunks)
+              and all(b["energy_after"] <= a["energy_after"] + slack for a, b in zip(chunks, chunks[1:]))
+              and all(abs(b["energy_before"] - a["energy_after"]) <= slack for a, b in zip(chunks, chunks[1:])),
+              f"each chunk goes on from the previous one, the energy never rises "
+              f"({reply['energy_start']:.4e} -> {last['energy_after']:.4e})")
+        if not last["converged"]:
+            ws.send('{"type": "refine"}')
+            reply = ws.reply()
+            ws.receive()
+            check(reply["type"] == "refined" and reply["iterations"] == 0 and reply["done"]
+                  and reply["total_iterations"] == 10, "at the cap, a refinement runs no iteration")
+
+        # A drag starts the refinement again from its result.
+        ws.send(json.dumps({"type": "drag", "translation": t, "rotation": [math.cos(angle / 2), 0, 0, math.sin(angle / 2)]}))
+        reply = ws.reply()
+        ws.receive()
+        check(reply["type"] == "deformed", "a drag after the refinement is answered")
+        ws.send('{"type": "refine"}')
+        reply = ws.reply()
+        opcode, data = ws.receive()
+        positions = struct.unpack(f"<{3 * len(region)}f", data)
+        check(reply["type"] == "refined" and reply["total_iterations"] == reply["iterations"] == 4
+              and reply["energy_start"] == reply["energy_before"] > last["energy_after"],
+              f"a drag starts the refinement again (energy {reply['energy_start']:.4e})")
+        check(turned_handle_error(positions) < 1e-3 * radius, "the handle is still on its targets")
 
         ws.send('{"type": "reset"}')
         reply = ws.reply()
