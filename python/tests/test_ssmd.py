@@ -459,8 +459,9 @@ def test_version():
 
 def arap_energy(rest, deformed, F):
     """The as-rigid-as-possible energy of the refinement report, evaluated
-    here: the best rotation per vertex one-ring, the absolute cotangent
-    weights, divided by the weighted sum of the squared rest edge lengths."""
+    here: the best rotation per vertex one-ring, the cotangent weights
+    clamped at 0 (the tube's are all 0 or more), divided by the weighted sum
+    of the squared rest edge lengths."""
     n = len(rest)
     heads, tails, weights = [], [], []
     for k in range(3):
@@ -471,7 +472,7 @@ def arap_energy(rest, deformed, F):
         tails += [b, a]
         weights += [cotangent / 2, cotangent / 2]
     keys, inverse = np.unique(np.concatenate(heads) * n + np.concatenate(tails), return_inverse=True)
-    w = np.abs(np.bincount(inverse, weights=np.concatenate(weights)))
+    w = np.maximum(np.bincount(inverse, weights=np.concatenate(weights)), 0)
     i, j = keys // n, keys % n
     e, d = rest[i] - rest[j], deformed[i] - deformed[j]
     covariance = np.zeros((n, 3, 3))

@@ -264,8 +264,7 @@ def main():
               and all(r["iterations"] <= 4 for r in chunks[1:]),
               f"chunks of at most 4 iterations until done ({last['total_iterations']} iterations, "
               f"converged {last['converged']})")
-        # (The energy weighs with the signed cotangent weights: on a mesh with
-        # obtuse angles it may fall below 0.)
+        # An absolute slack: the comparisons hold whatever the sign.
         slack = 1e-9 * abs(reply["energy_start"])
         check(all(r["energy_start"] == reply["energy_start"] for r in chunks)
               and all(b["energy_after"] <= a["energy_after"] + slack for a, b in zip(chunks, chunks[1:]))
