@@ -461,9 +461,10 @@ public:
   /// the mesh holds (usually the result of `deform()`, a far better start
   /// than the rest shape). Each iteration fits a rotation per vertex one-ring
   /// and back-substitutes with a sparse factorization of the region's
-  /// cotangent Laplacian: with `EXACT_CONSTRAINTS` the one `preprocess()`
-  /// made for the detail transfer; otherwise the first `refine()` of a
-  /// constraint set makes it. With `set_volume_preservation()`, each
+  /// cotangent Laplacian, its negative weights clamped at 0 as in CGAL: with
+  /// `EXACT_CONSTRAINTS` and no negative weight the one `preprocess()` made
+  /// for the detail transfer; otherwise the first `refine()` of a constraint
+  /// set makes it. With `set_volume_preservation()`, each
   /// iteration keeps the enclosed volume (as-rigid-as-possible deformation
   /// alone lets a twisted tube collapse as its energy falls).
   ///

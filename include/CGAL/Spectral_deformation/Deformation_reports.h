@@ -65,9 +65,10 @@ struct Spectral_deformation_report
 ///
 /// The energy is the as-rigid-as-possible energy of Sorkine and Alexa (2007)
 /// of the region against its initial geometry, with the best rotation per
-/// vertex one-ring and the cotangent weights, divided by the weighted sum of
-/// the squared rest edge lengths: 0 for a rigid motion, about the mean
-/// squared relative edge distortion otherwise. Times are wall-clock seconds.
+/// vertex one-ring and the cotangent weights clamped at 0 (as CGAL's
+/// `ORIGINAL_ARAP` weighs), divided by the weighted sum of the squared rest
+/// edge lengths: 0 for a rigid motion, about the mean squared relative edge
+/// distortion otherwise. Times are wall-clock seconds.
 struct Spectral_refinement_report
 {
   bool success = false;             ///< whether the mesh was updated
@@ -83,7 +84,7 @@ struct Spectral_refinement_report
   bool volume_preserved = false;
   std::vector<double> energies;     ///< the energy before the first iteration and after each
   std::vector<double> seconds_at_iteration; ///< the time since the iterations started, at each entry of `energies`
-  double factorization_seconds = 0; ///< the sparse factorization, when the constraint set had none yet (0 with `EXACT_CONSTRAINTS` after `deform()`)
+  double factorization_seconds = 0; ///< the sparse factorization of the constraint set, when it had none yet (none when `EXACT_CONSTRAINTS` made one for `deform()` and the region has no negative cotangent weight)
   double total_seconds = 0;         ///< the whole `refine()` call, preprocessing excluded
 };
 

@@ -9,9 +9,12 @@
 
 #include <CGAL/Spectral_deformation/Deformation_reports.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Smooth_rotation_field.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/rigid_fit.h>
+#include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -19,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -27,16 +31,50 @@ namespace internal {
 namespace Deformation {
 
 using Mesh::Positions;
+using Mesh::Region_geometry;
+
+/// The cotangent stiffness `stiffness` with its negative weights (positive
+/// off-diagonal entries) set to 0 and its diagonal made again the sum of the
+/// weights of each row; `clamped` tells whether a weight was negative. With
+/// a negative weight the energy below is no sum of squares: its local step
+/// would favour rotations that stretch the edges of obtuse triangles, and
+/// on the meshes of scanned shapes (the armadillo) it goes below 0.
+inline Eigen::SparseMatrix<double> clamped_stiffness(const Eigen::SparseMatrix<double>& stiffness, bool& clamped)
+{
+  Eigen::SparseMatrix<double> result = stiffness;
+  clamped = false;
+  for(Eigen::Index j = 0; j < result.outerSize(); ++j)
+  {
+    double sum = 0;
+    for(Eigen::SparseMatrix<double>::InnerIterator it(result, j); it; ++it)
+      if(it.row() != j)
+      {
+        if(it.value() > 0)
+        {
+          it.valueRef() = 0;
+          clamped = true;
+        }
+        sum -= it.value();
+      }
+    for(Eigen::SparseMatrix<double>::InnerIterator it(result, j); it; ++it)
+      if(it.row() == j)
+        it.valueRef() = sum;
+  }
+  if(clamped)
+    result.prune(0.0);
+  return result;
+}
 
 /// The local step of as-rigid-as-possible deformation (Sorkine and Alexa
 /// 2007) on the detailed mesh, and the energy it minimizes:
 ///
 ///   E(x) = min over R of Σ_i Σ_j w_ij ‖(x_i − x_j) − R_i (v_i − v_j)‖²,
 ///
-/// over the one-ring edges ij of every vertex, w_ij the cotangent weights
-/// with their signs (those of the stiffness Q that the global step solves
-/// with) and v the rest positions, divided by Σ_i Σ_j w_ij ‖v_i − v_j‖² so
-/// that it does not depend on the scale. The rotations that reach the
+/// over the one-ring edges ij of every vertex, w_ij the weights of the
+/// stiffness Q that the global step solves with (`clamped_stiffness()`: the
+/// cotangent weights with the negative ones set to 0, as CGAL's
+/// `ORIGINAL_ARAP` does) and v the rest positions, divided by
+/// Σ_i Σ_j w_ij ‖v_i − v_j‖² so that it does not depend on the scale. The rotations that reach the
 /// minimum give the right-hand side of the global step,
 /// b_i = Σ_j w_ij ½(R_i + R_j)(v_i − v_j): both steps lower the same energy,
 /// so that the iteration of `refine_as_rigid_as_possible()` never raises it.
@@ -48,7 +86,8 @@ using Mesh::Positions;
 class Arap_local_step
 {
 public:
-  /// `stiffness` the cotangent stiffness of the mesh, `rest` its rest positions.
+  /// `stiffness` the stiffness of the weights (`clamped_stiffness()`), `rest`
+  /// the rest positions.
   void initialize(const Eigen::SparseMatrix<double>& stiffness, const Positions& rest)
   {
     m_adjacency.initialize(stiffness);
@@ -141,8 +180,7 @@ private:
 /// Sets the rows of the constrained vertices of `set` to their `targets`
 /// (one row each, in the order of `set`) in `prescribed` (resized to the
 /// rows of `positions`) and in `positions`.
-template <class ConstraintSet>
-void place_constrained(const ConstraintSet& set, const Positions& targets, Positions& prescribed, Positions& positions)
+inline void place_constrained(const Constraint_set& set, const Positions& targets, Positions& prescribed, Positions& positions)
 {
   prescribed.resize(positions.rows(), 3);
   for(std::size_t k = 0; k < set.constrained.size(); ++k)
@@ -187,6 +225,76 @@ void refine_as_rigid_as_possible(Arap_local_step& local, const GlobalSolve& solv
   }
   report.energy_after = energy;
 }
+
+/// The refinement of a region's deformation towards the optimum of the
+/// as-rigid-as-possible energy (`refine_as_rigid_as_possible()`), with the
+/// control vertices on their targets and the fixed ring at rest. Its global
+/// step is a Dirichlet problem of the clamped stiffness (`clamped_stiffness()`):
+/// when no weight of the region is negative that is the stiffness of the
+/// detail transfer, whose exact policy's factorization is reused; otherwise
+/// the refinement factors its own, once per constraint set.
+template <class SparseSPDSolverTraits>
+class Arap_refinement
+{
+public:
+  typedef Detail_transfer<SparseSPDSolverTraits> System;
+
+  /// For the region `region` of cotangent stiffness `stiffness`; `shared`,
+  /// when not null, a detail transfer set on that stiffness whose factorization
+  /// may be reused (it must outlive this object).
+  void initialize(const Region_geometry& region, const Eigen::SparseMatrix<double>& stiffness, System* shared)
+  {
+    bool clamped = false;
+    Eigen::SparseMatrix<double> weights = clamped_stiffness(stiffness, clamped);
+    m_local_step.initialize(weights, region.arrays.positions);
+    m_own.reset();
+    m_shared = nullptr;
+    if(clamped || shared == nullptr)
+    {
+      m_own.reset(new System());
+      m_own->set_mesh(region.arrays, std::move(weights));
+    }
+    else
+      m_shared = shared;
+  }
+
+  bool initialized() const { return m_own != nullptr || m_shared != nullptr; }
+
+  /// Refines `positions` (one row per vertex of the region) for the
+  /// constraint set `set` and the `targets` of its constrained vertices; the
+  /// volume kept when `preserve_volume` and defined. Throws
+  /// `Spectral_deformation_error` when a factorization or a solve fails.
+  void refine(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
+              bool preserve_volume, unsigned int max_iterations, double tolerance, Positions& positions,
+              Spectral_refinement_report& report)
+  {
+    typedef Spectral_deformation_error Error;
+    const auto start = std::chrono::steady_clock::now();
+    System& system = m_own ? *m_own : *m_shared;
+    if(m_own)
+      m_own->set_volume_preservation(preserve_volume, region.is_fixed);
+    std::vector<char> prescribed_flags(region.is_fixed.size(), 0);
+    for(int i : set.constrained)
+      prescribed_flags[static_cast<std::size_t>(i)] = 1;
+    if(!system.prepare_dirichlet(prescribed_flags))
+      throw Error(Error::SOLVER_FAILURE, "the factorization of the refinement's system failed");
+    report.factorization_seconds = seconds_since(start);
+    place_constrained(set, targets, m_prescribed, positions);
+    refine_as_rigid_as_possible(
+        m_local_step,
+        [this, &system](const Eigen::MatrixXd& rhs, Positions& out) {
+          return system.solve_dirichlet(rhs, m_prescribed, out);
+        },
+        positions, max_iterations, tolerance, report);
+    report.volume_preserved = system.preserves_volume();
+  }
+
+private:
+  Arap_local_step m_local_step;
+  std::unique_ptr<System> m_own;
+  System* m_shared = nullptr;
+  Positions m_prescribed;
+};
 
 } // namespace Deformation
 } // namespace internal

@@ -11,7 +11,6 @@
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Arap_refinement.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Spatial_dual_laplacian_solver.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 
@@ -77,36 +76,19 @@ public:
 
   /// Refines `positions` (the region's, one row per vertex) towards the
   /// optimum of the as-rigid-as-possible energy, with the constrained
-  /// vertices of `set` on their `targets` (`refine_as_rigid_as_possible()`).
-  /// The dual Laplacian system has no use for the cotangent stiffness of the
-  /// region that the global step solves with: its first call factors it.
+  /// vertices of `set` on their `targets` (`Arap_refinement`, which factors
+  /// the cotangent stiffness of the region: the dual Laplacian system has
+  /// no use for it).
   void refine(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
               unsigned int max_iterations, double tolerance, Positions& positions,
               Spectral_refinement_report& report)
   {
-    typedef Spectral_deformation_error Error;
-    const auto start = std::chrono::steady_clock::now();
     if(!m_refinement)
     {
-      m_refinement.reset(new Refinement());
-      m_refinement->system.set_mesh(region.arrays, cotangent_stiffness(region.arrays));
-      m_refinement->local_step.initialize(m_refinement->system.stiffness(), region.arrays.positions);
+      m_refinement.reset(new Arap_refinement<SparseSPDSolverTraits>());
+      m_refinement->initialize(region, cotangent_stiffness(region.arrays), nullptr);
     }
-    std::vector<char> prescribed_flags(region.is_fixed.size(), 0);
-    for(int i : set.constrained)
-      prescribed_flags[static_cast<std::size_t>(i)] = 1;
-    Detail_transfer<SparseSPDSolverTraits>& system = m_refinement->system;
-    if(!system.prepare_dirichlet(prescribed_flags))
-      throw Error(Error::SOLVER_FAILURE, "the factorization of the refinement's system failed");
-    report.factorization_seconds = seconds_since(start);
-    Positions prescribed;
-    place_constrained(set, targets, prescribed, positions);
-    refine_as_rigid_as_possible(
-        m_refinement->local_step,
-        [&system, &prescribed](const Eigen::MatrixXd& rhs, Positions& out) {
-          return system.solve_dirichlet(rhs, prescribed, out);
-        },
-        positions, max_iterations, tolerance, report);
+    m_refinement->refine(region, set, targets, false, max_iterations, tolerance, positions, report);
   }
 
   void accept()
@@ -121,12 +103,7 @@ private:
   std::unique_ptr<Spatial_dual_laplacian_solver<SparseSPDSolverTraits>> m_solver;
   Positions m_solution, m_pending;
   bool m_has_solution = false;
-  struct Refinement
-  {
-    Detail_transfer<SparseSPDSolverTraits> system; // its Dirichlet system only
-    Arap_local_step local_step;
-  };
-  std::unique_ptr<Refinement> m_refinement;
+  std::unique_ptr<Arap_refinement<SparseSPDSolverTraits>> m_refinement; // made by the first refine()
 };
 
 } // namespace Deformation

@@ -204,30 +204,17 @@ public:
 
   /// Refines `positions` (the region's, one row per vertex) towards the
   /// optimum of the as-rigid-as-possible energy of the detailed region, with
-  /// the constrained vertices of `set` on their `targets`
-  /// (`refine_as_rigid_as_possible()`). The global step back-substitutes with
-  /// the exact policy's factorization, which the soft policy makes now; the
-  /// volume is kept when the detail transfer keeps it.
+  /// the constrained vertices of `set` on their `targets` (`Arap_refinement`,
+  /// which reuses the exact policy's factorization when it can). The volume
+  /// is kept when the detail transfer keeps it.
   void refine(const Region_geometry& region, const Constraint_set& set, const Positions& targets,
               unsigned int max_iterations, double tolerance, Positions& positions,
               Spectral_refinement_report& report)
   {
-    typedef Spectral_deformation_error Error;
-    const auto start = std::chrono::steady_clock::now();
-    if(!m_detail.prepare_dirichlet(prescribed_flags(region, set)))
-      throw Error(Error::SOLVER_FAILURE, "the factorization of the refinement's system failed");
-    report.factorization_seconds = seconds_since(start);
-    if(!m_local_step.initialized())
-      m_local_step.initialize(m_detail.stiffness(), region.arrays.positions);
-    Positions& prescribed = m_prescribed;
-    place_constrained(set, targets, prescribed, positions);
-    refine_as_rigid_as_possible(
-        m_local_step,
-        [this, &prescribed](const Eigen::MatrixXd& rhs, Positions& out) {
-          return m_detail.solve_dirichlet(rhs, prescribed, out);
-        },
-        positions, max_iterations, tolerance, report);
-    report.volume_preserved = m_detail.preserves_volume();
+    if(!m_refinement.initialized())
+      m_refinement.initialize(region, m_detail.stiffness(), &m_detail);
+    m_refinement.refine(region, set, targets, m_detail.preserves_volume(), max_iterations, tolerance, positions,
+                        report);
   }
 
   /// The solves of each stage before the last in `deform()`.
@@ -400,7 +387,7 @@ private:
   Spectral_dual_laplacian_solver m_solver;
   Constraint_products m_constraint_products;
   Detail_transfer<SparseSPDSolverTraits> m_detail;
-  Arap_local_step m_local_step; // of the refinement, made by its first call
+  Arap_refinement<SparseSPDSolverTraits> m_refinement; // made by the first refine()
   Spectral_constraint_policy m_policy = EXACT_CONSTRAINTS;
   Eigen::MatrixXd m_coefficients, m_pending;
   // Buffers of a drag, kept between drags: on large meshes, fresh pages for
