@@ -13,7 +13,7 @@
 // gives each one's time to come within 1 % of it.
 //
 // Usage: benchmark_refinement --output FILE.md [--data FILE.tsv] [--case FILE.case] [--levels 0,1]
-//        [--cgal-iterations N] [--package-iterations N] [--keep-volume]
+//        [--cgal-iterations N] [--package-iterations N] [--keep-volume] [--mesh-output DIR]
 
 #include "cgal_arap_solver_traits.h"
 #include "deformation_cases.h"
@@ -39,13 +39,15 @@ struct Options
   unsigned int cgal_iterations = 2000;
   unsigned int package_iterations = 500;
   bool keep_volume = false;
+  std::string mesh_output; // directory for the last shapes of both; empty: none
 };
 
 void print_usage(const char* program)
 {
   std::cerr << "usage: " << program
             << " --output FILE.md [--data FILE.tsv] [--case FILE.case] [--meshes DIR] [--levels 0,1]\n"
-               "       [--cgal-iterations N (2000)] [--package-iterations N (500)] [--keep-volume]\n";
+               "       [--cgal-iterations N (2000)] [--package-iterations N (500)] [--keep-volume]\n"
+               "       [--mesh-output DIR (the last shapes, NAME_LEVEL_package.off and ..._cgal.off)]\n";
 }
 
 Options parse_options(int argc, char** argv)
@@ -80,6 +82,8 @@ Options parse_options(int argc, char** argv)
       o.package_iterations = static_cast<unsigned int>(std::stoul(value()));
     else if(a == "--keep-volume")
       o.keep_volume = true;
+    else if(a == "--mesh-output")
+      o.mesh_output = value();
     else
       throw std::runtime_error("unknown option " + a);
   }
@@ -99,11 +103,24 @@ struct Curve
 {
   std::string name;
   std::vector<Point_on_curve> points;
+  Mesh last; // the shape at the last checkpoint
 };
 
 // Chunks of 1, 1, 2, 3, 4, 6, 9, ... iterations: checkpoints close together
 // at first, then spread over the slow tail.
 unsigned int next_chunk(unsigned int done) { return std::max(1u, done / 2); }
+
+// The iterations of CGAL's deform() with its default settings.
+constexpr unsigned int cgal_default_iterations = 10;
+
+// The checkpoint after `iterations` iterations, or null.
+const Point_on_curve* at_iterations(const Curve& curve, unsigned int iterations)
+{
+  for(const Point_on_curve& p : curve.points)
+    if(p.iterations == iterations)
+      return &p;
+  return nullptr;
+}
 
 Curve run_package(const Deformation_case& c, const Case_geometry& g, const Options& o)
 {
@@ -133,6 +150,8 @@ Curve run_package(const Deformation_case& c, const Case_geometry& g, const Optio
     seconds += seconds_since(start);
     done += chunk;
     curve.points.push_back({done, seconds, measure(g, positions_of(mesh))});
+    if(done >= o.package_iterations)
+      curve.last = mesh;
     std::cerr << "  package, " << done << " refinement iterations: " << seconds << " s, energy "
               << curve.points.back().quality.arap_energy << " (region: " << d.refine_report().energy_before
               << " -> " << d.refine_report().energy_after << " in " << d.refine_report().iterations
@@ -160,7 +179,9 @@ Curve run_cgal(const Deformation_case& c, const Case_geometry& g, const Options&
   double previous = std::numeric_limits<double>::infinity();
   while(done < o.cgal_iterations)
   {
-    const unsigned int chunk = std::min(next_chunk(done), o.cgal_iterations - done);
+    unsigned int chunk = std::min(next_chunk(done), o.cgal_iterations - done);
+    if(done < cgal_default_iterations)
+      chunk = std::min(chunk, cgal_default_iterations - done); // a checkpoint at CGAL's deform(10)
     start = Clock::now();
     d.deform(chunk, 0.0);
     seconds += seconds_since(start);
@@ -174,6 +195,7 @@ Curve run_cgal(const Deformation_case& c, const Case_geometry& g, const Options&
       break;
     previous = energy;
   }
+  curve.last = mesh;
   return curve;
 }
 
@@ -237,6 +259,13 @@ int main(int argc, char** argv)
       const Curve package = run_package(c, g, o);
       const Curve cgal = run_cgal(c, g, o);
       const double converged = lowest_energy(cgal);
+      if(!o.mesh_output.empty())
+      {
+        const std::string stem = o.mesh_output + "/" + c.name + "_" + std::to_string(level);
+        CGAL::IO::write_OFF(stem + (o.keep_volume ? "_package_volume.off" : "_package.off"), package.last,
+                            CGAL::parameters::stream_precision(17));
+        CGAL::IO::write_OFF(stem + "_cgal.off", cgal.last, CGAL::parameters::stream_precision(17));
+      }
       report << "\n## " << c.name << " @" << level << ": " << n << " vertices, ROI " << c.roi.size() << "\n\n";
       const Point_on_curve* cgal_reach = first_reaching(cgal, 1.01 * converged);
       const Point_on_curve* package_reach = first_reaching(package, 1.01 * converged);
@@ -252,7 +281,14 @@ int main(int argc, char** argv)
       if(cgal_reach && package_reach)
         report << ": " << fixed(cgal_reach->seconds / package_reach->seconds, 1) << "× sooner";
       report << ". The package's lowest energy: " << scientific(lowest_energy(package)) << " ("
-             << fixed(lowest_energy(package) / converged, 4) << " × CGAL's).\n\n"
+             << fixed(lowest_energy(package) / converged, 4) << " × CGAL's)";
+      if(const Point_on_curve* ten = at_iterations(cgal, cgal_default_iterations))
+        report << "; CGAL ARAP's `deform(10)`: " << scientific(ten->quality.arap_energy) << " ("
+               << fixed(lowest_energy(package) / ten->quality.arap_energy, 3) << " × the package's lowest)";
+      report << ". Last shapes: volume change " << percent(package.points.back().quality.volume_change)
+             << " (package), " << percent(cgal.points.back().quality.volume_change)
+             << " (CGAL ARAP); folded pairs " << package.points.back().quality.folded_pairs << " and "
+             << cgal.points.back().quality.folded_pairs << ".\n\n"
              << "| method | iterations | seconds | ARAP energy | / CGAL's lowest | volume change | folded pairs |\n"
              << "|---|--:|--:|--:|--:|--:|--:|\n";
       for(const Curve* curve : {&package, &cgal})
