@@ -283,8 +283,9 @@ int main(int argc, char** argv)
       report << ". The package's lowest energy: " << scientific(lowest_energy(package)) << " ("
              << fixed(lowest_energy(package) / converged, 4) << " × CGAL's)";
       if(const Point_on_curve* ten = at_iterations(cgal, cgal_default_iterations))
-        report << "; CGAL ARAP's `deform(10)`: " << scientific(ten->quality.arap_energy) << " ("
-               << fixed(lowest_energy(package) / ten->quality.arap_energy, 3) << " × the package's lowest)";
+        report << "; CGAL ARAP's `deform(10)`: " << scientific(ten->quality.arap_energy)
+               << " (the package's lowest is " << fixed(lowest_energy(package) / ten->quality.arap_energy, 3)
+               << " × it)";
       report << ". Last shapes: volume change " << percent(package.points.back().quality.volume_change)
              << " (package), " << percent(cgal.points.back().quality.volume_change)
              << " (CGAL ARAP); folded pairs " << package.points.back().quality.folded_pairs << " and "

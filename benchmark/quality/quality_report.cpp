@@ -110,6 +110,8 @@ struct Options
   bool partition_of_unity_basis = true; // the class's default, the approximate basis; false: the exact one
   Eigen::Index basis_samples = 0;         // of the approximate basis; 0: its default
   unsigned int long_iterations = 1000;      // of the additional runs
+  double refine_tolerance = -1;             // >= 0: a run of refine() after deform() (spectral, iterated)
+  unsigned int refine_iterations = 1000;    // its cap
   unsigned int arap_large_iterations = 200; // of the additional CGAL runs on large ROIs
   std::size_t large_roi = 20000;
   std::vector<std::string> notes;
@@ -146,6 +148,9 @@ void print_usage(const char* program)
       << "                                (set_volume_preservation(true))\n"
       << "  --long-iterations N           iteration cap of the additional runs made when the\n"
       << "                                default deform() does not converge (default 1000)\n"
+      << "  --refine T                    also refine() the result of the spectral iteration's\n"
+      << "                                deform() to the ARAP optimum (tolerance T)\n"
+      << "  --refine-iterations N         the cap of --refine (default 1000)\n"
       << "  --large-roi N                 ROIs with more vertices are large (default 20000)\n"
       << "  --arap-large-iterations N     cap of the additional CGAL runs on large ROIs\n"
       << "                                (default 200)\n"
@@ -250,6 +255,10 @@ Options parse_options(int argc, char** argv)
       options.rotation_patches = static_cast<std::size_t>(std::stoul(value()));
     else if(argument == "--long-iterations")
       options.long_iterations = to_positive_int(value(), argument);
+    else if(argument == "--refine")
+      options.refine_tolerance = std::stod(value());
+    else if(argument == "--refine-iterations")
+      options.refine_iterations = to_positive_int(value(), argument);
     else if(argument == "--large-roi")
       options.large_roi = to_positive_int(value(), argument);
     else if(argument == "--arap-large-iterations")
@@ -508,6 +517,25 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
   deformation.deform();
   record_deformation(deformation, linear, keep_smooth_meshes, seconds_since(deform_start), mesh, first);
   results.push_back(first);
+
+  if(!linear && first.success && options.refine_tolerance >= 0)
+  {
+    Run_result refined = first;
+    refined.label = label + ", `deform()`, `refine(" + std::to_string(options.refine_iterations) + ", " +
+                    scientific(options.refine_tolerance) + ")`";
+    refined.key = key + "_refined";
+    refined.preprocess_reused = true;
+    const Clock::time_point refine_start = Clock::now();
+    const bool success = deformation.refine(options.refine_iterations, options.refine_tolerance);
+    refined.deform_seconds += seconds_since(refine_start);
+    const CGAL::Spectral_refinement_report& r = deformation.refine_report();
+    refined.success = success;
+    refined.message = r.message;
+    refined.iterations = first.iterations + " + " + std::to_string(r.iterations) +
+                         (r.converged ? " (converged)" : " (cap)");
+    refined.after = positions_of(mesh);
+    results.push_back(refined);
+  }
 
   const CGAL::Spectral_deformation_report& report = deformation.deform_report();
   if(linear || !report.success || report.converged ||

@@ -11,6 +11,8 @@
 #include <omp.h>
 #endif
 
+#include <cstddef>
+
 namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
@@ -25,6 +27,20 @@ inline int available_threads()
   return 1;
 #endif
 }
+
+/// Loops over the vertices or faces of a region run on all threads from this
+/// many items: a few tens of nanoseconds of work per item, so that below it
+/// the loop is shorter than starting and joining a team of threads.
+constexpr std::ptrdiff_t parallel_loop_items = 20000;
+/// Kernels over the rows of the basis (n rows, m columns) run on all threads
+/// from this many entries, for the same reason.
+constexpr std::ptrdiff_t parallel_basis_entries = 100000;
+/// Products of the reduced operators, rows × m, from this many entries (each
+/// row's product is longer than a row of the basis alone).
+constexpr std::ptrdiff_t parallel_operator_entries = 200000;
+/// Products of a sparse matrix by the basis, non-zeros × m, from this many
+/// multiply-adds (a few nanoseconds each).
+constexpr std::ptrdiff_t parallel_sparse_products = 1000000;
 
 } // namespace internal
 } // namespace Spectral_deformation

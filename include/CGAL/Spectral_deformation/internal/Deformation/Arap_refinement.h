@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_ARAP_REFINEMENT_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_ARAP_REFINEMENT_H
 
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
 #include <CGAL/Spectral_deformation/Deformation_reports.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
@@ -115,7 +116,7 @@ public:
     m_rotations.resize(static_cast<std::size_t>(n));
     double energy = 0;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) reduction(+ : energy) if(n > parallel_threshold)
+#pragma omp parallel for schedule(static) reduction(+ : energy) if(n > parallel_loop_items)
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
     {
@@ -144,7 +145,6 @@ public:
   const Eigen::MatrixXd& right_hand_side() const { return m_right_hand_side; }
 
   /// Regions from this many vertices fit their rotations on all threads.
-  static constexpr std::ptrdiff_t parallel_threshold = 20000;
 
 private:
   void form_right_hand_side()
@@ -153,7 +153,7 @@ private:
     const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.number_of_vertices());
     m_right_hand_side.resize(n, 3);
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n > parallel_threshold)
+#pragma omp parallel for schedule(static) if(n > parallel_loop_items)
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
     {

@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_CLUSTERED_ROTATIONS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_CLUSTERED_ROTATIONS_H
 
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Smooth_rotation_field.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/rigid_fit.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
@@ -373,7 +374,7 @@ public:
     const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(adjacency.number_of_vertices());
     int threads = 1;
 #ifdef _OPENMP
-    if(n > 20000)
+    if(n > parallel_loop_items)
       threads = omp_get_max_threads();
 #endif
     // Each thread sums the rows of its share of the vertices into its own

@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_ROTATED_EDGES_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_ROTATED_EDGES_H
 
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Smooth_rotation_field.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
@@ -72,7 +73,7 @@ private:
     Eigen::MatrixXd& rhs = m_right_hand_side;
     rhs.resize(n, 3);
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n > 20000)
+#pragma omp parallel for schedule(static) if(n > parallel_loop_items)
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
     {

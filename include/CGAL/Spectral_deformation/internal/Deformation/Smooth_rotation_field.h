@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SMOOTH_ROTATION_FIELD_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_SMOOTH_ROTATION_FIELD_H
 
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
 #include <CGAL/Spectral_deformation/internal/Deformation/rigid_fit.h>
@@ -142,7 +143,7 @@ public:
     // A neighbour's three coordinates in one cache line instead of three.
     m_vertex_major.resize(3, n);
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n > 20000)
+#pragma omp parallel for schedule(static) if(n > parallel_loop_items)
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
       m_vertex_major.col(i) = smooth_deformed.row(i).transpose();
@@ -162,7 +163,7 @@ public:
     // One pass: the covariance of each one-ring, and the rotation of the
     // vertices that do not inherit.
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n > 20000)
+#pragma omp parallel for schedule(static) if(n > parallel_loop_items)
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
     {
@@ -201,7 +202,7 @@ private:
     const Vertex_major_positions vertex_major = x.transpose();
     result.resize(static_cast<std::size_t>(n));
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n > 20000)
+#pragma omp parallel for schedule(static) if(n > parallel_loop_items)
 #endif
     for(std::ptrdiff_t i = 0; i < n; ++i)
       result[static_cast<std::size_t>(i)] = covariance(vertex_major, static_cast<int>(i));

@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_PARTITION_OF_UNITY_SPACE_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_PARTITION_OF_UNITY_SPACE_H
 
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Farthest_point_sampling.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Spectra_lanczos.h>
@@ -120,7 +121,7 @@ partition_of_unity_functions(const Edge_length_graph& graph,
 
   Parallel_exception failure;
 #ifdef _OPENMP
-#pragma omp parallel if(n > 20000)
+#pragma omp parallel if(n > parallel_loop_items)
 #endif
   {
     std::unique_ptr<Bounded_dijkstra> search;
@@ -156,7 +157,7 @@ partition_of_unity_functions(const Edge_length_graph& graph,
   if(linear)
   {
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n > 20000)
+#pragma omp parallel for schedule(static) if(n > parallel_loop_items)
 #endif
     for(Eigen::Index s = 0; s < k; ++s)
     {
@@ -292,7 +293,7 @@ inline void galerkin_matrices(const Eigen::SparseMatrix<double>& stiffness,
   };
   Parallel_exception failure;
 #ifdef _OPENMP
-#pragma omp parallel if(n > 20000)
+#pragma omp parallel if(n > parallel_loop_items)
 #endif
   {
     std::unique_ptr<Work> work;
@@ -429,7 +430,7 @@ inline void prolongate(const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows,
   typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Buffer;
   Parallel_exception failure;
 #ifdef _OPENMP
-#pragma omp parallel if(n > 20000)
+#pragma omp parallel if(n > parallel_loop_items)
 #endif
   {
     std::unique_ptr<Buffer> buffer;

@@ -7,6 +7,8 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_BASIS_PANELS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_BASIS_PANELS_H
 
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
+
 #include <Eigen/Core>
 
 #ifdef _OPENMP
@@ -79,7 +81,7 @@ void multiply(Eigen::Index n, Eigen::Index m, const BlockOf& block_of, const Coe
   const Eigen::Matrix<double, Eigen::Dynamic, 3> c = coefficients;
   const long long blocks = (n + BlockRows - 1) / BlockRows;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n * m > 100000)
+#pragma omp parallel for schedule(static) if(n * m > parallel_basis_entries)
 #endif
   for(long long b = 0; b < blocks; ++b)
   {
@@ -112,7 +114,7 @@ void multiply_transpose(Eigen::Index n, Eigen::Index m, const BlockOf& block_of,
   const long long blocks = (n + BlockRows - 1) / BlockRows;
   std::vector<Eigen::MatrixXd> partial(1);
 #ifdef _OPENMP
-#pragma omp parallel if(n * m > 100000)
+#pragma omp parallel if(n * m > parallel_basis_entries)
 #endif
   {
     int thread = 0;

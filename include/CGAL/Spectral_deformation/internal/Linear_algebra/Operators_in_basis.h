@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_OPERATORS_IN_BASIS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_OPERATORS_IN_BASIS_H
 
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Sparse_times_dense.h>
 
 #include <Eigen/Core>
@@ -44,7 +45,7 @@ void gram_in_basis(Eigen::Index rows, const RowValue& row_value,
   const Eigen::Index range_rows = (rows + ranges - 1) / ranges;
   std::array<Eigen::MatrixXd, ranges> partial;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic) if(rows * m > 200000)
+#pragma omp parallel for schedule(dynamic) if(rows * m > parallel_operator_entries)
 #endif
   for(int range = 0; range < ranges; ++range)
   {

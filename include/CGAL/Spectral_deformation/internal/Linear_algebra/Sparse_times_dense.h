@@ -7,6 +7,8 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_SPARSE_TIMES_DENSE_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_SPARSE_TIMES_DENSE_H
 
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -36,7 +38,7 @@ void for_each_column_block_product(const Eigen::SparseMatrix<double>& A, const M
   eigen_assert(A.cols() == H.rows());
   const long long blocks = (H.cols() + block_columns - 1) / block_columns;
 #ifdef _OPENMP
-#pragma omp parallel if(A.nonZeros() * H.cols() > 1000000)
+#pragma omp parallel if(A.nonZeros() * H.cols() > parallel_sparse_products)
 #endif
   {
     Row_block buffer(A.rows(), block_columns);

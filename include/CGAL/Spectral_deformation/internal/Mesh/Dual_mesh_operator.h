@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_MESH_DUAL_MESH_OPERATOR_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_MESH_DUAL_MESH_OPERATOR_H
 
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
@@ -152,14 +153,14 @@ public:
     const Eigen::Index f_count = number_of_faces();
     centroids.resize(f_count, 3);
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(f_count > 20000)
+#pragma omp parallel for schedule(static) if(f_count > parallel_loop_items)
 #endif
     for(Eigen::Index f = 0; f < f_count; ++f)
       centroids.row(f) = (positions.row(m_triangles(f, 0)) + positions.row(m_triangles(f, 1)) +
                           positions.row(m_triangles(f, 2))) / 3.0;
     const Eigen::Index rows = number_of_rows();
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(rows > 20000)
+#pragma omp parallel for schedule(static) if(rows > parallel_loop_items)
 #endif
     for(Eigen::Index r = 0; r < rows; ++r)
     {
