@@ -9,6 +9,7 @@ CGAL ARAP's lowest energy.
 Usage: plot_refinement.py FIGURE.png TABLE.tsv [TABLE.tsv ...]
 """
 import csv
+import os
 import sys
 from collections import defaultdict
 
@@ -35,7 +36,8 @@ def main(figure, tables):
         ax.axhline(1.01 * lowest, color="grey", linestyle=":", label="1 % above CGAL ARAP's lowest")
         ax.set_xlabel("seconds since the constructor")
         ax.set_ylabel("ARAP energy")
-        ax.set_title(f"{key[1]:,} vertices")
+        case = os.path.splitext(os.path.basename(key[0]))[0].replace("refinement_", "").replace("_", " ")
+        ax.set_title(f"{case}: {key[1]:,} vertices")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=8)
     fig.tight_layout()
