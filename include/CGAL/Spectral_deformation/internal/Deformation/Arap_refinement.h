@@ -273,10 +273,7 @@ public:
     System& system = m_own ? *m_own : *m_shared;
     if(m_own)
       m_own->set_volume_preservation(preserve_volume, region.is_fixed);
-    std::vector<char> prescribed_flags(region.is_fixed.size(), 0);
-    for(int i : set.constrained)
-      prescribed_flags[static_cast<std::size_t>(i)] = 1;
-    if(!system.prepare_dirichlet(prescribed_flags))
+    if(!system.prepare_dirichlet(prescribed_flags(region, set)))
       throw Error(Error::SOLVER_FAILURE, "the factorization of the refinement's system failed");
     report.factorization_seconds = seconds_since(start);
     place_constrained(set, targets, m_prescribed, positions);

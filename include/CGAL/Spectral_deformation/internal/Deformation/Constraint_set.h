@@ -36,6 +36,16 @@ struct Constraint_set
   std::size_t size() const { return constrained.size(); }
 };
 
+/// One flag per vertex of `region`: whether `set` constrains it (the
+/// prescribed unknowns of a Dirichlet system).
+inline std::vector<char> prescribed_flags(const Region_geometry& region, const Constraint_set& set)
+{
+  std::vector<char> prescribed(region.is_fixed.size(), 0);
+  for(int i : set.constrained)
+    prescribed[static_cast<std::size_t>(i)] = 1;
+  return prescribed;
+}
+
 /// Groups every connected set of control vertices (positions from
 /// `number_of_fixed` in `constrained`), by union-find over the edges of
 /// `triangles` joining two of them.

@@ -276,14 +276,6 @@ public:
   }
 
 private:
-  static std::vector<char> prescribed_flags(const Region_geometry& region, const Constraint_set& set)
-  {
-    std::vector<char> prescribed(region.is_fixed.size(), 0);
-    for(int i : set.constrained)
-      prescribed[static_cast<std::size_t>(i)] = 1;
-    return prescribed;
-  }
-
   // Runs `basis_step` and, with `prescribed` not empty and two threads
   // available, the exact
   // policy's factorization of the detail transfer for these prescribed
