@@ -24,6 +24,8 @@
 #include "deformation_cases.h"
 
 #include <CGAL/Manifold_harmonics_basis.h>
+// Deformations with other traits than the compiled core holds.
+#include <CGAL/Spectral_deformation/Pipelines_from_headers.h>
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/cotangent_operators.h>

@@ -8,7 +8,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake
+  build-essential cmake time
   libcgal-dev libeigen3-dev libboost-dev libspectra-dev libsuitesparse-dev libopenblas-dev catch2
   libcgal-demo doxygen libjs-mathjax fonts-mathjax chromium
   f3d xvfb xauth python3-pil python3-matplotlib fonts-dejavu-core

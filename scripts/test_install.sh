@@ -4,7 +4,8 @@
 # The installed CMake package as another project uses it: installs the
 # package to a temporary prefix, then configures, builds and runs the consumer
 # of test/install_consumer once per component combination (none, CHOLMOD,
-# OpenMP, OpenBLAS, all), one after the other. For every build it checks the
+# OpenMP, OpenBLAS, all), one after the other, each with the compiled core of
+# its components (which the consumer checks it uses). For every build it checks the
 # compile line (-fopenmp only with OpenMP, the CHOLMOD and OpenBLAS macros
 # only with their components) and the link line (each library only with its
 # component). Then it
@@ -84,6 +85,7 @@ for components in "${all_components[@]}"; do
   check_present "$label" "$link_line" 'gomp|-fopenmp' "$(wants OpenMP)" "OpenMP on the link line"
   check_present "$label" "$link_line" 'cholmod' "$(wants CHOLMOD)" "CHOLMOD on the link line"
   check_present "$label" "$link_line" 'openblas' "$(wants OpenBLAS)" "OpenBLAS on the link line"
+  check_present "$label" "$link_line" 'SSMD_compiled_core' 1 "compiled core on the link line"
 
   output="$("$build/consumer")" || { echo "$output"; fail "$label" "the consumer failed"; }
   echo "consumer [$label]: $output"

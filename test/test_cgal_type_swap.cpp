@@ -6,6 +6,8 @@
 // checked by test/compile_fail/template_arguments.cpp.
 #include "test_meshes.h"
 
+// Deformations with other traits than the compiled core holds.
+#include <CGAL/Spectral_deformation/Pipelines_from_headers.h>
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/Partition_of_unity_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>

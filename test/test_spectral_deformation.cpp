@@ -3,9 +3,12 @@
 
 #include "test_meshes.h"
 
+// Other traits than the compiled core holds, besides the defaults.
+#include <CGAL/Spectral_deformation/Pipelines_from_headers.h>
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/IO/deformation_selection.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Constraint_products.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_in_region_order.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
@@ -705,6 +708,75 @@ TEST_CASE("a basis kept in float: the deformation of the double one, rigid motio
     CHECK_FALSE(loaded.preprocess_report().basis_computed);
     CHECK(loaded.preprocess_report().single_precision_basis == (threshold == 0));
     CHECK((result - in_float).rowwise().norm().maxCoeff() / diagonal < 1e-12);
+  }
+}
+
+// The default traits under other names: the same numerics, which the
+// compiled core does not hold, so that these deformations compile their
+// pipelines from the headers.
+struct Headers_partition_of_unity_traits : CGAL::Partition_of_unity_eigensolver_traits<>
+{
+};
+struct Headers_block_lanczos_traits : CGAL::Block_lanczos_eigensolver_traits<>
+{
+};
+struct Headers_sparse_solver_traits : CGAL::Default_sparse_spd_solver_traits
+{
+};
+
+template <CGAL::Spectral_deformation_algorithm_tag TAG, class ET = CGAL::Default, class ST = CGAL::Default>
+using Deformation_of = CGAL::Spectral_surface_mesh_deformation<Surface_mesh, CGAL::Default, CGAL::Default, TAG, ET, ST>;
+template <CGAL::Spectral_deformation_algorithm_tag TAG, class ET = CGAL::Default, class ST = CGAL::Default>
+constexpr bool compiled_pipeline = internal::Deformation::Deformation_class_types<
+    Surface_mesh, CGAL::Default, CGAL::Default, TAG, ET, ST, CGAL::Default>::Selector::compiled;
+
+TEST_CASE("the compiled core gives the results of the pipelines compiled from the headers", "[deformation][core]")
+{
+  // This program links the compiled core of its configuration (the CMake
+  // target SSMD::Parallel does), so the default traits run it.
+  STATIC_REQUIRE(CGAL_SSMD_USES_COMPILED_CORE);
+  typedef Deformation_of<CGAL::SPECTRAL_DUAL_LAPLACIAN> Iterated_core;
+  typedef Deformation_of<CGAL::SPECTRAL_DUAL_LAPLACIAN, Headers_partition_of_unity_traits> Iterated_headers;
+  typedef Deformation_of<CGAL::SPECTRAL_DUAL_LAPLACIAN, CGAL::Block_lanczos_eigensolver_traits<>> Exact_core;
+  typedef Deformation_of<CGAL::SPECTRAL_DUAL_LAPLACIAN, Headers_block_lanczos_traits> Exact_headers;
+  typedef Deformation_of<CGAL::SPECTRAL_LINEAR> Linear_core;
+  typedef Deformation_of<CGAL::SPECTRAL_LINEAR, Headers_partition_of_unity_traits> Linear_headers;
+  typedef Deformation_of<CGAL::SPATIAL_DUAL_LAPLACIAN> Spatial_core;
+  typedef Deformation_of<CGAL::SPATIAL_DUAL_LAPLACIAN, CGAL::Default, Headers_sparse_solver_traits> Spatial_headers;
+  STATIC_REQUIRE(compiled_pipeline<CGAL::SPECTRAL_DUAL_LAPLACIAN>);
+  STATIC_REQUIRE(compiled_pipeline<CGAL::SPECTRAL_DUAL_LAPLACIAN, CGAL::Block_lanczos_eigensolver_traits<>>);
+  STATIC_REQUIRE(compiled_pipeline<CGAL::SPECTRAL_LINEAR>);
+  STATIC_REQUIRE(compiled_pipeline<CGAL::SPATIAL_DUAL_LAPLACIAN>);
+  STATIC_REQUIRE(!compiled_pipeline<CGAL::SPECTRAL_DUAL_LAPLACIAN, Headers_partition_of_unity_traits>);
+  STATIC_REQUIRE(!compiled_pipeline<CGAL::SPECTRAL_DUAL_LAPLACIAN, Headers_block_lanczos_traits>);
+  STATIC_REQUIRE(!compiled_pipeline<CGAL::SPECTRAL_LINEAR, Headers_partition_of_unity_traits>);
+  STATIC_REQUIRE(!compiled_pipeline<CGAL::SPATIAL_DUAL_LAPLACIAN, CGAL::Default, Headers_sparse_solver_traits>);
+
+  const Soup soup = bar(12, 2);
+  const internal::Deformation::Rigid_motion still;
+  const internal::Deformation::Rigid_motion bend = motion(pi / 2, Eigen::Vector3d::UnitY(), Eigen::Vector3d(0, 0, 5.0));
+  for(const CGAL::Spectral_constraint_policy policy : {CGAL::EXACT_CONSTRAINTS, CGAL::SOFT_CONSTRAINTS})
+  {
+    const Run core = deform_bar<Iterated_core>(soup, still, bend, 10, 0.0, 40, policy);
+    const Run headers = deform_bar<Iterated_headers>(soup, still, bend, 10, 0.0, 40, policy);
+    CHECK((core.after - core.before).cwiseAbs().maxCoeff() > 0.1);
+    CHECK((core.after - headers.after).cwiseAbs().maxCoeff() == 0.0);
+  }
+  {
+    const Run core = deform_bar<Exact_core>(soup, still, bend, 10, 0.0, 40);
+    const Run headers = deform_bar<Exact_headers>(soup, still, bend, 10, 0.0, 40);
+    CHECK((core.after - headers.after).cwiseAbs().maxCoeff() == 0.0);
+  }
+  {
+    const Run core = deform_bar<Linear_core>(soup, still, bend, 1, 0.0, 40);
+    const Run headers = deform_bar<Linear_headers>(soup, still, bend, 1, 0.0, 40);
+    CHECK((core.after - headers.after).cwiseAbs().maxCoeff() == 0.0);
+  }
+  {
+    const Run core = deform_bar<Spatial_core>(soup, still, bend, 10, 0.0);
+    const Run headers = deform_bar<Spatial_headers>(soup, still, bend, 10, 0.0);
+    CHECK((core.after - core.before).cwiseAbs().maxCoeff() > 0.1);
+    CHECK((core.after - headers.after).cwiseAbs().maxCoeff() == 0.0);
   }
 }
 

@@ -37,6 +37,10 @@ constexpr bool has_openmp = false;
 static_assert(has_cholmod == bool(SSMD_EXPECT_CHOLMOD), "CHOLMOD: not what the build asked for");
 static_assert(has_openblas == bool(SSMD_EXPECT_OpenBLAS), "OpenBLAS: not what the build asked for");
 static_assert(has_openmp == bool(SSMD_EXPECT_OpenMP), "OpenMP: not what the build asked for");
+// The targets link the compiled core of the components asked for, and the
+// consumer, compiled with the same ones, uses it instead of compiling the
+// pipelines.
+static_assert(CGAL_SSMD_USES_COMPILED_CORE, "the compiled core of the components is not used");
 static_assert(CGAL_SSMD_VERSION_NR >= 2000, "the version header names 0.2.0 or later");
 
 int main()

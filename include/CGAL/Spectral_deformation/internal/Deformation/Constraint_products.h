@@ -139,6 +139,34 @@ private:
   std::vector<Group> m_groups;
 };
 
+/// Targets of the smooth mesh (DESIGN rule 6): the rigid motion that best
+/// carries each group from its rest positions `rest` to its `targets` (one
+/// row per constrained vertex) carries the smooth rest positions `smooth`,
+/// plus the non-rigid part of the detailed targets. Putting the detailed
+/// targets on the smooth mesh instead shears rotated handles.
+inline Positions smooth_targets(const Constraint_set& set, const Positions& rest, const Positions& smooth,
+                                const Positions& targets)
+{
+  Positions result(targets.rows(), 3);
+  for(const std::vector<int>& group : set.groups)
+  {
+    Positions from(static_cast<Eigen::Index>(group.size()), 3), to(from.rows(), 3);
+    for(std::size_t g = 0; g < group.size(); ++g)
+    {
+      from.row(static_cast<Eigen::Index>(g)) = rest.row(set.constrained[static_cast<std::size_t>(group[g])]);
+      to.row(static_cast<Eigen::Index>(g)) = targets.row(group[g]);
+    }
+    const Rigid_motion motion = fit_rigid_motion(from, to);
+    for(std::size_t g = 0; g < group.size(); ++g)
+    {
+      const int i = set.constrained[static_cast<std::size_t>(group[g])];
+      const Eigen::RowVector3d residual = to.row(static_cast<Eigen::Index>(g)) - motion.apply(rest.row(i));
+      result.row(group[g]) = motion.apply(smooth.row(i)) + residual;
+    }
+  }
+  return result;
+}
+
 } // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation

@@ -64,7 +64,15 @@ struct Deformation_class_types
   typedef typename Default::Get<typename Sparse_solver::type, Default_sparse_spd_solver_traits>::type
       Spatial_solver_traits;
 
-  typedef Pipeline_selector<Algorithm::value, Sparse_solver_traits, Spatial_solver_traits> Selector;
+  typedef Pipeline_selector<Algorithm::value, Sparse_solver_traits, Spatial_solver_traits, Eigensolver_traits>
+      Selector;
+#if CGAL_SSMD_USES_COMPILED_CORE && !defined(CGAL_SPECTRAL_DEFORMATION_PIPELINES_FROM_HEADERS_H)
+  static_assert(Selector::compiled,
+                "Spectral_surface_mesh_deformation: the compiled core holds the pipelines of the default "
+                "sparse solver traits and of the eigensolver traits Partition_of_unity_eigensolver_traits<> "
+                "and Block_lanczos_eigensolver_traits<>; for other traits, include "
+                "<CGAL/Spectral_deformation/Pipelines_from_headers.h> first");
+#endif
   typedef Vertex_selection<TM, Vertex_index_map, Vertex_point_map> Selection;
   typedef Region_deformation<Selection, typename Selector::type, Eigensolver_traits, Selector::is_spectral>
       Computation;

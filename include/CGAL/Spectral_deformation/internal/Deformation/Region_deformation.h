@@ -13,7 +13,7 @@
 #include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Spectral_pipeline.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Spectral_settings.h>
 #include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 

@@ -18,6 +18,7 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Spectral_settings.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Target_stages.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
 #include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
@@ -47,28 +48,6 @@ using Mesh::Positions;
 using Mesh::Region_geometry;
 using Mesh::fingerprint;
 typedef Smooth_rotation_field::Vertex_major_positions Vertex_major_positions;
-
-/// The settings of a spectral deformation that its pipeline reads.
-struct Spectral_settings
-{
-  std::size_t frequencies = 100;
-  double weight = 1.0;
-  Spectral_constraint_policy policy = EXACT_CONSTRAINTS;
-  bool single_precision_basis = false;
-  // Regions of at least this many vertices keep their basis in float.
-  std::size_t single_precision_basis_threshold = default_single_precision_basis_threshold;
-  // The defaults are those of the quality sweep of the manual: no folded
-  // faces on large bends and twists, ARAP energies within a few per cent of
-  // the full iteration's, and an iteration whose cost does not grow with n.
-  std::size_t rotation_patches = default_rotation_patches;
-  Spectral_smooth_energy smooth_energy = DUAL_LAPLACIAN_AND_ARAP_ENERGY;
-  double stage_angle = default_stage_angle; // radians; 0: the targets reached in one stage
-  bool preserve_volume = false;             // the detail transfer keeps the enclosed volume
-
-  static constexpr std::size_t default_rotation_patches = 1000;
-  static constexpr std::size_t default_single_precision_basis_threshold = 200000;
-  static constexpr double default_stage_angle = 3.14159265358979323846 / 6;
-};
 
 /// The steps of the spectral algorithms for one region: the basis, the
 /// reduced dual Laplacian solve of the smooth mesh (iterated, or once with
