@@ -46,18 +46,6 @@ inline void normalize_signs(Eigen::MatrixXd& eigenvectors)
   }
 }
 
-/// Whether eigensolver traits take the vertex positions before `compute()`
-/// (`set_vertex_positions()`, an optional member of the concept).
-template <class Traits, class = void>
-struct Takes_vertex_positions : std::false_type
-{};
-
-template <class Traits>
-struct Takes_vertex_positions<
-    Traits, std::void_t<decltype(std::declval<Traits&>().set_vertex_positions(
-                std::declval<const Mesh::Positions&>()))>> : std::true_type
-{};
-
 /// The m smallest generalized eigenpairs of `stiffness`, the cotangent
 /// stiffness of `mesh` (validated arrays), against its lumped mass. Throws
 /// `Spectral_deformation_error`.
@@ -74,7 +62,7 @@ void compute_manifold_harmonics(const Triangle_arrays& mesh, const Eigen::Sparse
                     std::to_string(n) + "), got " + std::to_string(m));
   CGAL_precondition(stiffness.rows() == n && stiffness.cols() == n);
   mass = lumped_mass(mesh);
-  if constexpr(Takes_vertex_positions<EigensolverTraits>::value)
+  if constexpr(Declares_Uses_vertex_positions<EigensolverTraits>::value)
     eigensolver.set_vertex_positions(mesh.positions);
   if(!eigensolver.compute(stiffness, mass, m, eigenvalues, eigenvectors))
     throw Error(Error::SOLVER_FAILURE,
@@ -143,6 +131,9 @@ public:
   /// The eigensolver traits type.
   typedef typename CGAL::Default::Get<EigensolverTraits, Block_lanczos_eigensolver_traits<>>::type
       Eigensolver_traits;
+#ifndef DOXYGEN_RUNNING
+  static_assert(Spectral_deformation::internal::Eigensolver_requirements<Eigensolver_traits>::met);
+#endif
   /// Dense matrix type of bases and per-vertex data.
   typedef Eigen::MatrixXd Matrix;
   /// Dense vector type of eigenvalues and masses.

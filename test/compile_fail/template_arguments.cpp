@@ -20,6 +20,15 @@ typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Defau
 typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL::SPECTRAL_DUAL_LAPLACIAN,
                                                 CGAL::Default, CGAL::Block_lanczos_eigensolver_traits<>>
     Wrong_sparse_solver;
+// A sparse solver whose solve() is not const.
+struct Non_const_solve
+{
+  bool factor(const Eigen::SparseMatrix<double>&) { return true; }
+  bool solve(const Eigen::MatrixXd&, Eigen::MatrixXd&) { return true; }
+};
+typedef CGAL::Spectral_surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL::SPECTRAL_DUAL_LAPLACIAN,
+                                                CGAL::Default, Non_const_solve>
+    Sparse_solver_missing_a_member;
 
 int main()
 {
@@ -27,5 +36,6 @@ int main()
   Wrong_tag a(mesh);
   Wrong_eigensolver b(mesh);
   Wrong_sparse_solver c(mesh);
+  Sparse_solver_missing_a_member d(mesh);
   return 0;
 }

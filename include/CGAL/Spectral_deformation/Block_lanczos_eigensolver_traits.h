@@ -12,6 +12,9 @@
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_state.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Spectra_lanczos.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/dense_eigenpairs.h>
+#include <CGAL/Spectral_deformation/internal/Traits_requirements.h>
+
+#include <CGAL/tags.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -121,7 +124,13 @@ namespace CGAL {
 template <class SparseSPDSolverTraits = Default_eigensolver_sparse_spd_solver_traits>
 class Block_lanczos_eigensolver_traits
 {
+  static_assert(Spectral_deformation::internal::Sparse_spd_solver_requirements<SparseSPDSolverTraits>::met);
+
 public:
+  /// Declares the optional members `process_wide_tuning()` and
+  /// `set_process_wide_tuning()` (see `ManifoldHarmonicsEigensolverTraits`).
+  typedef CGAL::Tag_true Supports_process_wide_tuning;
+
   /// The state of a running `compute()`, passed to the progress callback.
   struct Progress
   {

@@ -11,6 +11,9 @@
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Farthest_point_sampling.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Partition_of_unity_space.h>
+#include <CGAL/Spectral_deformation/internal/Traits_requirements.h>
+
+#include <CGAL/tags.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -77,6 +80,13 @@ class Partition_of_unity_eigensolver_traits
   typedef Block_lanczos_eigensolver_traits<SparseSPDSolverTraits> Exact_traits;
 
 public:
+  /// Declares the optional members `process_wide_tuning()` and
+  /// `set_process_wide_tuning()` (see `ManifoldHarmonicsEigensolverTraits`).
+  typedef CGAL::Tag_true Supports_process_wide_tuning;
+  /// Declares the optional member `set_vertex_positions()` (see
+  /// `ManifoldHarmonicsEigensolverTraits`): the sampled functions are built
+  /// around vertices chosen by their positions.
+  typedef CGAL::Tag_true Uses_vertex_positions;
   /// Positions of the vertices, one row per vertex.
   typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Positions;
   /// The state of a running `compute()`, passed to the progress callback:

@@ -10,6 +10,9 @@
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Spectra_lanczos.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/dense_eigenpairs.h>
+#include <CGAL/Spectral_deformation/internal/Traits_requirements.h>
+
+#include <CGAL/tags.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -47,7 +50,13 @@ namespace CGAL {
 template <class SparseSPDSolverTraits = Default_sparse_spd_solver_traits>
 class Spectra_eigensolver_traits
 {
+  static_assert(Spectral_deformation::internal::Sparse_spd_solver_requirements<SparseSPDSolverTraits>::met);
+
 public:
+  /// Declares the optional members `process_wide_tuning()` and
+  /// `set_process_wide_tuning()` (see `ManifoldHarmonicsEigensolverTraits`).
+  typedef CGAL::Tag_true Supports_process_wide_tuning;
+
   /// The state of a running `compute()`, passed to the progress callback.
   ///
   /// The number of solves needed by the Lanczos iteration is not known in

@@ -52,6 +52,10 @@ struct Deformation_class_types
                 "CGAL::Default, a model of SparseSPDSolverTraits (such as "
                 "CGAL::Eigen_sparse_spd_solver_traits), or a sparse solver traits of "
                 "CGAL::Surface_mesh_deformation, which is not used; write CGAL::Default");
+  static_assert(Requirements_unless<Eigensolver::is_default || Eigensolver::is_weight_calculator, ET,
+                                    Eigensolver_requirements>::met);
+  static_assert(Requirements_unless<Sparse_solver::is_default || Sparse_solver::is_cgal_solver_traits, ST,
+                                    Sparse_spd_solver_requirements>::met);
 
   typedef typename Default::Get<VIM, typename GetInitializedVertexIndexMap<TM>::type>::type Vertex_index_map;
   typedef typename Default::Get<HIM, typename GetInitializedHalfedgeIndexMap<TM>::type>::type Hedge_index_map;

@@ -8,6 +8,7 @@
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_TEMPLATE_ARGUMENTS_H
 
 #include <CGAL/Spectral_deformation/Deformation_options.h>
+#include <CGAL/Spectral_deformation/internal/Traits_requirements.h>
 
 // A program written for CGAL's class names CGAL::ORIGINAL_ARAP,
 // CGAL::SPOKES_AND_RIMS or CGAL::SRE_ARAP; after the switch it no longer
@@ -78,18 +79,11 @@ struct Algorithm_of
   static constexpr Spectral_deformation_algorithm_tag value = Traits::algorithm(TAG);
 };
 
-// ManifoldHarmonicsEigensolverTraits: compute() with the signature of the concept.
-template <class T, class = void>
-struct Is_eigensolver_traits : std::false_type
-{};
-
+// ManifoldHarmonicsEigensolverTraits: compute() and error_message() with
+// the signatures of the concept.
 template <class T>
-struct Is_eigensolver_traits<
-    T, std::void_t<decltype(bool(std::declval<T&>().compute(
-                       std::declval<const Eigen::SparseMatrix<double>&>(), std::declval<const Eigen::VectorXd&>(),
-                       std::declval<Eigen::Index>(), std::declval<Eigen::VectorXd&>(),
-                       std::declval<Eigen::MatrixXd&>()))),
-                   decltype(std::string(std::declval<const T&>().error_message()))>> : std::true_type
+struct Is_eigensolver_traits
+  : std::conjunction<Members::Compute<T>, Members::Error_message<T>>
 {};
 
 // The point map that CGAL's class hands to its weight calculator: points of
@@ -140,16 +134,8 @@ struct Eigensolver_argument
 };
 
 // SparseSPDSolverTraits: factor() and a const solve() with the signatures of the concept.
-template <class T, class = void>
-struct Is_sparse_spd_solver_traits : std::false_type
-{};
-
 template <class T>
-struct Is_sparse_spd_solver_traits<
-    T, std::void_t<decltype(bool(std::declval<T&>().factor(std::declval<const Eigen::SparseMatrix<double>&>()))),
-                   decltype(bool(std::declval<const T&>().solve(std::declval<const Eigen::MatrixXd&>(),
-                                                                std::declval<Eigen::MatrixXd&>())))>>
-    : std::true_type
+struct Is_sparse_spd_solver_traits : std::conjunction<Members::Factor<T>, Members::Const_solve<T>>
 {};
 
 // CGAL's SparseLinearAlgebraWithFactorTraits_d (the sparse solver of CGAL's
@@ -179,6 +165,21 @@ struct Sparse_solver_argument
                        Is_cgal_sparse_solver_traits<ST>>::value;
   static constexpr bool valid = is_default || is_sparse_spd_solver_traits || is_cgal_solver_traits;
   typedef std::conditional_t<is_sparse_spd_solver_traits, ST, Default> type;
+};
+
+// `Requirements<T>::met`, checked unless `skip` (an argument that is not
+// meant as a traits class of the concept): a traits class that misses a
+// member of the concept then fails with the name of that member.
+template <bool skip, class T, template <class> class Requirements>
+struct Requirements_unless
+{
+  static constexpr bool met = true;
+};
+
+template <class T, template <class> class Requirements>
+struct Requirements_unless<false, T, Requirements>
+{
+  static constexpr bool met = Requirements<T>::met;
 };
 
 } // namespace Deformation

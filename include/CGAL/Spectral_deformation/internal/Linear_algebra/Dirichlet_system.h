@@ -24,35 +24,6 @@ namespace Linear_algebra {
 
 using Memory::set_process_wide_tuning_if_supported;
 
-/// Whether a sparse solver can report a fill-reducing ordering of a matrix
-/// and take one for its next factorization (`Cholmod_llt_solver_traits`).
-template <class Solver, class = void>
-struct Takes_fill_reducing_ordering : std::false_type
-{
-};
-template <class Solver>
-struct Takes_fill_reducing_ordering<
-    Solver, std::void_t<decltype(std::declval<Solver&>().fill_reducing_ordering(
-                            std::declval<const Eigen::SparseMatrix<double>&>())),
-                        decltype(std::declval<Solver&>().set_fill_reducing_ordering(std::vector<int>()))>>
-  : std::true_type
-{
-};
-
-/// Whether a sparse solver can factor a matrix that differs from its last
-/// one in a few rows and columns by updating its factor
-/// (`Cholmod_llt_solver_traits::refactor_rows()`).
-template <class Solver, class = void>
-struct Refactors_rows : std::false_type
-{
-};
-template <class Solver>
-struct Refactors_rows<Solver, std::void_t<decltype(bool(std::declval<Solver&>().refactor_rows(
-                                  std::declval<const Eigen::SparseMatrix<double>&>(),
-                                  std::declval<const std::vector<int>&>())))>> : std::true_type
-{
-};
-
 /// A symmetric positive semi-definite system A X = B in which some unknowns
 /// are prescribed. The matrix factored is A with the rows and columns of the
 /// prescribed unknowns replaced by those of the identity, whose right-hand
@@ -61,7 +32,8 @@ struct Refactors_rows<Solver, std::void_t<decltype(bool(std::declval<Solver&>().
 ///
 /// Keeping every unknown in the factored matrix lets a new set of prescribed
 /// unknowns that differs from the last one in a few of them update the
-/// factor (when the solver can, see `Refactors_rows`) instead of factoring
+/// factor (when the solver can, see the tag `Supports_row_updates` of
+/// SparseSPDSolverTraits) instead of factoring
 /// anew. When the solver takes a fill-reducing ordering, every factorization
 /// of the same matrix (until `forget_matrix()`) uses one ordering of the
 /// whole matrix (`fill_reducing_ordering()`) instead of choosing a new one
@@ -94,7 +66,7 @@ public:
     split(A, prescribed, system, m_coupling);
     if(n == 0)
       return m_factored = true;
-    if constexpr(Takes_fill_reducing_ordering<SparseSPDSolverTraits>::value)
+    if constexpr(Declares_Supports_fill_reducing_ordering<SparseSPDSolverTraits>::value)
     {
       if(!m_ordered)
       {
@@ -104,7 +76,7 @@ public:
       if(static_cast<Eigen::Index>(m_whole_ordering.size()) == n)
         m_solver.set_fill_reducing_ordering(m_whole_ordering);
     }
-    if constexpr(Refactors_rows<SparseSPDSolverTraits>::value)
+    if constexpr(Declares_Supports_row_updates<SparseSPDSolverTraits>::value)
     {
       if(same_size)
         return m_factored = m_solver.refactor_rows(system, changed);

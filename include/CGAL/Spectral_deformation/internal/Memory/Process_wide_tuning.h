@@ -7,8 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_MEMORY_PROCESS_WIDE_TUNING_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_MEMORY_PROCESS_WIDE_TUNING_H
 
-#include <type_traits>
-#include <utility>
+#include <CGAL/Spectral_deformation/internal/Traits_requirements.h>
 
 namespace CGAL {
 namespace Spectral_deformation {
@@ -27,28 +26,18 @@ namespace Memory {
 //   (Page_mapping.h, Large_array.h): the advice stays on the address range
 //   after the block is freed.
 // Including a header or using a traits object with its defaults changes
-// none of them. A traits class that can use them has the members
-// `process_wide_tuning()` and `set_process_wide_tuning(bool)` (default
-// `false`); the traits that create other traits objects (the eigensolvers
-// create their sparse solver) hand the choice on with the helpers below,
-// which do nothing for a traits class without these members.
-
-template <class Traits, class = void>
-struct Has_process_wide_tuning : std::false_type
-{};
-
-template <class Traits>
-struct Has_process_wide_tuning<
-    Traits, std::void_t<decltype(std::declval<const Traits&>().process_wide_tuning()),
-                        decltype(std::declval<Traits&>().set_process_wide_tuning(true))>>
-    : std::true_type
-{};
+// none of them. A traits class that can use them declares the tag
+// `Supports_process_wide_tuning` and has the members `process_wide_tuning()`
+// and `set_process_wide_tuning(bool)` (default `false`; see
+// Traits_requirements.h); the traits that create other traits objects (the
+// eigensolvers create their sparse solver) hand the choice on with the
+// helpers below, which do nothing for a traits class without the tag.
 
 // `traits.process_wide_tuning()`, or `false` for traits without the option.
 template <class Traits>
 bool process_wide_tuning_of(const Traits& traits)
 {
-  if constexpr(Has_process_wide_tuning<Traits>::value)
+  if constexpr(Declares_Supports_process_wide_tuning<Traits>::value)
     return traits.process_wide_tuning();
   else
   {
@@ -62,7 +51,7 @@ bool process_wide_tuning_of(const Traits& traits)
 template <class Traits>
 void set_process_wide_tuning_if_supported(Traits& traits, bool enabled)
 {
-  if constexpr(Has_process_wide_tuning<Traits>::value)
+  if constexpr(Declares_Supports_process_wide_tuning<Traits>::value)
     traits.set_process_wide_tuning(enabled);
   else
   {
