@@ -926,11 +926,13 @@ void measure_anatomy(Deformation& d, const Deformation_case& c, int repetitions,
   });
   // A pure read of H (the sum of its entries): the streaming bandwidth.
   time_into(row, "read_H", repetitions, [&] { sink += H.sum(); });
-  // The same two products with the panel layout of the package's solver
-  // (internal::Basis_panels), in double (what the iteration uses) and float.
-  const SD::Linear_algebra::Basis_panels<double> panels(H);
+  // The same two products as the package's solver makes them
+  // (internal::Stored_basis), in double and in float.
+  SD::Linear_algebra::Stored_basis panels;
+  panels.assign(Eigen::MatrixXd(H), false);
   {
-    const SD::Linear_algebra::Basis_panels<float> panels_float(H);
+    SD::Linear_algebra::Stored_basis panels_float;
+    panels_float.assign(Eigen::MatrixXd(H), true);
     SD::Mesh::Positions S;
     Eigen::MatrixXd P;
     time_into(row, "panel_HY", repetitions, [&] { panels.multiply(Y, S); sink += S(0, 0); });
@@ -1970,13 +1972,13 @@ void write_report(std::ostream& out, const Options& options, const Run_info& inf
         << format_times(row_of(anatomy_run, "spectral_exact_100")->sample("iteration")) << " |\n"
         << "| one iteration of the internal solver (`solve()`, 10 − 1 solves) | "
         << format_times(anatomy->sample("solver_iteration")) << " |\n"
-        << "| shape S = HṼ (n×m by m×3, `Basis_panels::multiply`) | "
+        << "| shape S = HṼ (n×m by m×3, `Stored_basis::multiply`) | "
         << format_times(anatomy->sample("step_shape")) << " |\n"
         << "| dual normals of S (`Dual_mesh_operator::update_normals`, " << fixed(anatomy->value("dual_rows"), 0)
         << " rows) | " << format_times(anatomy->sample("step_dual")) << " |\n"
         << "| (L̂F)ᵀ(−h n̂) (`Dual_mesh_operator::apply_transpose`: faces, then vertices) | "
         << format_times(anatomy->sample("step_sparse")) << " |\n"
-        << "| Hᵀ (…) (m×n by n×3, `Basis_panels::multiply_transpose`) | "
+        << "| Hᵀ (…) (m×n by n×3, `Stored_basis::multiply_transpose`) | "
         << format_times(anatomy->sample("step_project")) << " |\n"
         << "| reduced solve (m×m Cholesky, 3 right-hand sides) | "
         << format_times(anatomy->sample("step_reduced_solve")) << " |\n"

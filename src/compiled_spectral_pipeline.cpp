@@ -83,8 +83,6 @@ void Compiled_spectral_pipeline<Iterated>::set_process_wide_tuning(bool enabled)
   m_implementation->set_process_wide_tuning(enabled);
 }
 template <bool Iterated>
-void Compiled_spectral_pipeline<Iterated>::set_single_precision(bool single) { m_implementation->set_single_precision(single); }
-template <bool Iterated>
 void Compiled_spectral_pipeline<Iterated>::set_rotation_patches(std::size_t count)
 {
   m_implementation->set_rotation_patches(count);

@@ -4,7 +4,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Dual_mesh_laplacian.h>
-#include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Stored_basis.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Operators_in_basis.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Sparse_times_dense.h>
 
@@ -192,7 +192,6 @@ TEST_CASE("non-manifold and inconsistently oriented faces are refused", "[dual][
 TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's products", "[dual]")
 {
   using namespace CGAL::Spectral_deformation::internal::Mesh;
-  using CGAL::Spectral_deformation::internal::Linear_algebra::Basis_panels;
   using CGAL::Spectral_deformation::internal::Linear_algebra::Stored_basis;
   // A plane with an open border: rows only where a face has three neighbours.
   const Soup soup = bumpy_plane(12);
@@ -215,17 +214,9 @@ TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's
   op.apply_transpose(rest.weights, factors, normals, faces, spread);
   CHECK((spread - expected).cwiseAbs().maxCoeff() < 1e-14 * (1.0 + expected.cwiseAbs().maxCoeff()));
 
-  // Several panels and a partial last one.
-  const Eigen::MatrixXd H = Eigen::MatrixXd::Random(3 * Basis_panels<double>::panel_rows + 17, 23);
   const Eigen::MatrixXd C = Eigen::MatrixXd::Random(23, 3);
-  const Positions X = Positions::Random(H.rows(), 3);
-  const Basis_panels<double> panels(H);
   Positions shape;
   Eigen::MatrixXd projected;
-  panels.multiply(C, shape);
-  panels.multiply_transpose(X, projected);
-  CHECK((shape - H * C).cwiseAbs().maxCoeff() < 1e-13);
-  CHECK((projected - H.transpose() * X).cwiseAbs().maxCoeff() < 1e-12);
 
   // The basis read in place, by blocks larger than the panels: rows past
   // several whole blocks and a partial one.
@@ -255,15 +246,6 @@ TEST_CASE("the iteration kernels agree with the sparse operator and with Eigen's
   CHECK((shape - tall_rounded * C).cwiseAbs().maxCoeff() < 1e-13);
   CHECK((projected - tall_rounded.transpose() * tall_X).cwiseAbs().maxCoeff() < 1e-11);
   CHECK((columns.row(100) - tall_rounded.row(100)).cwiseAbs().maxCoeff() == 0.0);
-
-  // Float storage: exact products of the rounded basis, in double arithmetic.
-  const Eigen::MatrixXd rounded = H.cast<float>().cast<double>();
-  REQUIRE((rounded - H).cwiseAbs().maxCoeff() > 1e-10);
-  const Basis_panels<float> float_panels(H);
-  float_panels.multiply(C, shape);
-  float_panels.multiply_transpose(X, projected);
-  CHECK((shape - rounded * C).cwiseAbs().maxCoeff() < 1e-13);
-  CHECK((projected - rounded.transpose() * X).cwiseAbs().maxCoeff() < 1e-12);
 }
 
 TEST_CASE("the blocked sparse-times-basis product is Eigen's, bit for bit, on any number of threads", "[dual]")

@@ -9,7 +9,7 @@
 #include <CGAL/Spectral_deformation/IO/deformation_selection.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_products.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
+#include <CGAL/Spectral_deformation/arap_energy.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_in_region_order.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/subdivision_method_3.h>
@@ -589,52 +589,6 @@ TEST_CASE("reset, continued iteration and overwrite_initial_geometry", "[deforma
   CHECK((positions_of(mesh) - deformed).cwiseAbs().maxCoeff() < 1e-8);
   deformation.reset();
   CHECK(positions_of(mesh) == deformed);
-}
-
-TEST_CASE("a single-precision copy of the basis: close to double, and switched back exactly",
-          "[deformation]")
-{
-  Surface_mesh mesh = to_mesh<Surface_mesh>(bar(16, 3));
-  const Eigen::MatrixXd before = positions_of(mesh);
-  const double diagonal = (before.colwise().maxCoeff() - before.colwise().minCoeff()).norm();
-  std::vector<SM_vertex> bottom, top;
-  select_ends(mesh, 0.3, 4.7, bottom, top);
-  Spectral deformation(mesh);
-  CHECK_FALSE(deformation.single_precision_basis());
-  auto all = vertex_list(mesh);
-  deformation.insert_roi_vertices(all.begin(), all.end());
-  deformation.insert_control_vertices(bottom.begin(), bottom.end());
-  deformation.insert_control_vertices(top.begin(), top.end());
-  deformation.set_number_of_frequencies(60);
-  auto run = [&]() {
-    deformation.reset();
-    deformation.translate(top.begin(), top.end(), Eigen::Vector3d(1.5, 0, 0.5));
-    deformation.deform(10, 0.0);
-    return positions_of(mesh);
-  };
-  const Eigen::MatrixXd in_double = run();
-  deformation.set_single_precision_basis(true);
-  CHECK(deformation.single_precision_basis());
-  const Eigen::MatrixXd in_float = run();
-  CHECK_FALSE(deformation.preprocess_report().region_rebuilt); // the basis was kept
-  const double deviation = (in_float - in_double).rowwise().norm().maxCoeff() / diagonal;
-  // The float copy is used (float rounding shows) and stays close.
-  CHECK(deviation > 1e-12);
-  CHECK(deviation < 1e-3);
-  deformation.set_single_precision_basis(false);
-  CHECK(run() == in_double);
-
-  // Set before the first preprocess(), it applies to the basis computed then.
-  Surface_mesh fresh = to_mesh<Surface_mesh>(bar(16, 3));
-  Spectral single(fresh);
-  single.set_single_precision_basis(true);
-  single.insert_roi_vertices(vertices(fresh).begin(), vertices(fresh).end());
-  single.insert_control_vertices(bottom.begin(), bottom.end());
-  single.insert_control_vertices(top.begin(), top.end());
-  single.set_number_of_frequencies(60);
-  single.translate(top.begin(), top.end(), Eigen::Vector3d(1.5, 0, 0.5));
-  single.deform(10, 0.0);
-  CHECK(positions_of(fresh) == in_float);
 }
 
 TEST_CASE("a basis kept in float: the deformation of the double one, rigid motions exact, saved and loaded",

@@ -145,7 +145,6 @@ struct Deformation_settings
   std::string energy = "dual_laplacian_and_arap";
   std::string basis = "approximate";
   double constraint_weight = -1; // negative: the library's default
-  bool single_precision_basis = false;
   long long single_precision_basis_threshold = -1; // negative: the library's default
   long long rotation_patches = -1; // negative: the library's default
   double stage_angle = -1;         // degrees; negative: the library's default
@@ -417,7 +416,6 @@ private:
         d.set_smooth_energy(energy);
         if(m_settings.constraint_weight >= 0)
           d.set_constraint_weight(m_settings.constraint_weight);
-        d.set_single_precision_basis(m_settings.single_precision_basis);
         if(m_settings.single_precision_basis_threshold >= 0)
           d.set_single_precision_basis_threshold(
               static_cast<std::size_t>(m_settings.single_precision_basis_threshold));

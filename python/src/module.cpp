@@ -134,7 +134,7 @@ invariant to scale); angles are in degrees.
       .def(py::init([warn](const py::object& V_in, const py::object& F_in, const py::handle& handles,
                            const py::handle& roi, const py::handle& fixed, long long m,
                            const std::string& policy, const std::string& algorithm,
-                           const std::string& energy, const py::object& constraint_weight, bool single_precision_basis,
+                           const std::string& energy, const py::object& constraint_weight,
                            const py::object& rotation_patches, const py::object& stage_angle,
                            bool volume_preservation, const std::string& basis,
                            const py::object& basis_cache, const py::object& progress,
@@ -155,7 +155,6 @@ invariant to scale); angles are in degrees.
                  throw py::value_error("constraint_weight must be a positive finite number");
                settings.constraint_weight = w;
              }
-             settings.single_precision_basis = single_precision_basis;
              settings.single_precision_basis_threshold = optional_count(
                  single_precision_basis_threshold, "single_precision_basis_threshold must be 0 or positive");
              settings.rotation_patches =
@@ -180,7 +179,7 @@ invariant to scale); angles are in degrees.
            py::arg("fixed") = py::none(), py::arg("m") = 100, py::arg("policy") = "exact",
            py::arg("algorithm") = "spectral", py::arg("energy") = "dual_laplacian_and_arap",
            py::arg("constraint_weight") = py::none(),
-           py::arg("single_precision_basis") = false, py::arg("rotation_patches") = py::none(),
+           py::arg("rotation_patches") = py::none(),
            py::arg("stage_angle") = py::none(), py::arg("volume_preservation") = false,
            py::arg("basis") = "approximate", py::arg("basis_cache") = py::none(),
            py::arg("progress") = py::none(), py::arg("single_precision_basis_threshold") = py::none(),
@@ -217,8 +216,6 @@ energy : {'dual_laplacian_and_arap', 'dual_laplacian', 'arap'}
     What the spectral iteration minimizes.
 constraint_weight : float, optional
     Weight of the handles in the reduced system (None: 1).
-single_precision_basis : bool
-    Deprecated: the iteration reads a float copy of the basis.
 rotation_patches : int, optional
     Rotation patches of the iteration (None: 1000; 0: one rotation per dual
     vertex, the full iteration).

@@ -46,7 +46,6 @@ class Deformation:
         algorithm: _Algorithm = "spectral",
         energy: _Energy = "dual_laplacian_and_arap",
         constraint_weight: Optional[float] = None,
-        single_precision_basis: bool = False,
         rotation_patches: Optional[int] = None,
         stage_angle: Optional[float] = None,
         volume_preservation: bool = False,

@@ -95,25 +95,6 @@ public:
     m_computation.eigensolver() = traits;
   }
 
-  /// Whether `deform()` reads a float copy of the basis (default `false`).
-  /// \deprecated See `set_single_precision_basis()`.
-  bool single_precision_basis() const { return m_computation.settings().single_precision_basis; }
-  /// Makes every iteration of `deform()` read a float copy of the basis
-  /// (4 n m more bytes); the arithmetic stays in double. The reduced systems
-  /// amplify the rounding of the copy: results move by about
-  /// \f$ 10^{-4} \f$ of the bounding-box diagonal. Takes effect at once,
-  /// the basis is kept.
-  /// \deprecated The iteration reads the basis itself, without a double
-  /// copy, so the float copy no longer saves memory and is not faster; it
-  /// will be removed in a later version. A basis kept in float (see
-  /// `set_single_precision_basis_threshold()`) has no copy: the option then
-  /// changes nothing.
-  void set_single_precision_basis(bool single)
-  {
-    static_assert(is_spectral, "set_single_precision_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.set_single_precision(single);
-  }
-
   /// The number of vertices from which a region keeps its basis in single
   /// precision (default 200,000).
   std::size_t single_precision_basis_threshold() const

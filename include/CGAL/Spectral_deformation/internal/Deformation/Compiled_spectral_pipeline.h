@@ -64,7 +64,6 @@ public:
   void restart();
 
   void set_process_wide_tuning(bool enabled);
-  void set_single_precision(bool single);
   void set_rotation_patches(std::size_t count);
   void set_volume_preservation(bool preserve, const Mesh::Region_geometry& region);
   bool preserves_volume() const;

@@ -121,13 +121,6 @@ public:
       m_region->pipeline.restart();
   }
 
-  void set_single_precision(bool single)
-  {
-    m_settings.single_precision_basis = single;
-    if(m_region)
-      m_region->pipeline.set_single_precision(single);
-  }
-
   void set_rotation_patches(std::size_t count)
   {
     m_settings.rotation_patches = count;

@@ -11,9 +11,9 @@
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Rotated_edges.h>
-#include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Dense_products.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Operators_in_basis.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Stored_basis.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
@@ -32,7 +32,6 @@ namespace Spectral_deformation {
 namespace internal {
 namespace Deformation {
 
-using Linear_algebra::Basis_panels;
 using Linear_algebra::Stored_basis;
 using Mesh::Dual_coordinates;
 using Mesh::Dual_mesh_operator;
@@ -83,7 +82,6 @@ private:
                   const Eigen::SparseMatrix<double>* stiffness)
   {
     m_basis = &basis;
-    assign_panels();
     m_mass = mass;
     m_dual = Dual_mesh_operator(rest.triangles, rest.number_of_vertices());
     basis.visit([this, &mass, &rest](const auto& H) {
@@ -165,24 +163,6 @@ public:
     m_patch_count = count;
     if(m_basis != nullptr)
       build_patches();
-  }
-
-  /// Whether the iteration reads a float copy of a basis stored in double
-  /// (the arithmetic stays in double). The reduced systems amplify the
-  /// rounding of the copy, which the reduced matrices, computed from the
-  /// double basis, do not share: the result moved by about 1e-4 of the
-  /// bounding-box diagonal from the double one (armadillo arm, 104k
-  /// vertices), which is why it is not the default. A basis stored in float
-  /// has no copy.
-  bool single_precision() const { return m_single_precision; }
-  /// Sets single_precision(); an initialized solver copies the basis again.
-  void set_single_precision(bool single)
-  {
-    if(single == m_single_precision)
-      return;
-    m_single_precision = single;
-    if(m_basis != nullptr)
-      assign_panels();
   }
 
   const Positions& smooth_rest() const { return m_smooth_rest; }
@@ -410,33 +390,16 @@ private:
     return report.stop_after(iteration, step, tolerance);
   }
 
-  // The iteration reads the basis itself, or the float copy of a double one
-  // in single precision.
-  bool uses_float_copy() const { return m_single_precision && !m_basis->single_precision(); }
-  void assign_panels()
-  {
-    if(uses_float_copy())
-      m_basis->visit([this](const auto& H) { m_float_panels.assign(H); });
-    else
-      m_float_panels = Basis_panels<float>();
-  }
-
   template <typename Shape>
   void multiply(const Eigen::MatrixXd& coefficients, Shape& shape) const
   {
-    if(uses_float_copy())
-      m_float_panels.multiply(coefficients, shape);
-    else
-      m_basis->multiply(coefficients, shape);
+    m_basis->multiply(coefficients, shape);
   }
 
   template <class Values>
   void multiply_transpose(const Values& values, Eigen::MatrixXd& result) const
   {
-    if(uses_float_copy())
-      m_float_panels.multiply_transpose(values, result);
-    else
-      m_basis->multiply_transpose(values, result);
+    m_basis->multiply_transpose(values, result);
   }
 
   // Buffers of the iteration, kept between calls: the first touch of fresh
@@ -451,8 +414,6 @@ private:
   bool uses_arap_energy() const { return m_energy != DUAL_LAPLACIAN_ENERGY; }
 
   const Stored_basis* m_basis = nullptr;
-  Basis_panels<float> m_float_panels;
-  bool m_single_precision = false;
 
   Eigen::VectorXd m_mass;
   Dual_mesh_operator m_dual;

@@ -20,7 +20,7 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Spectral_settings.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Target_stages.h>
-#include <CGAL/Spectral_deformation/internal/Linear_algebra/Basis_panels.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Stored_basis.h>
 #include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 #include <CGAL/Spectral_deformation/internal/available_threads.h>
@@ -100,7 +100,6 @@ public:
     m_stored_basis.assign(std::move(m_basis.basis),
                           static_cast<std::size_t>(region.arrays.number_of_vertices()) >=
                               settings.single_precision_basis_threshold);
-    m_solver.set_single_precision(settings.single_precision_basis);
     m_solver.set_rotation_patches(settings.rotation_patches);
     // Without iterations there are no rotations to fit: the linear
     // algorithm keeps the paper's system.
@@ -211,7 +210,6 @@ public:
 
   /// See `Detail_transfer::set_process_wide_tuning()`.
   void set_process_wide_tuning(bool enabled) { m_detail.set_process_wide_tuning(enabled); }
-  void set_single_precision(bool single) { m_solver.set_single_precision(single); }
   void set_rotation_patches(std::size_t count) { m_solver.set_rotation_patches(count); }
   /// See `Detail_transfer::set_volume_preservation()`; takes effect at the next `deform()`.
   void set_volume_preservation(bool preserve, const Region_geometry& region)

@@ -22,7 +22,6 @@ struct Spectral_settings
   std::size_t frequencies = 100;
   double weight = 1.0;
   Spectral_constraint_policy policy = EXACT_CONSTRAINTS;
-  bool single_precision_basis = false;
   // Regions of at least this many vertices keep their basis in float.
   std::size_t single_precision_basis_threshold = default_single_precision_basis_threshold;
   // The defaults are those of the quality sweep of the manual: no folded

@@ -4,8 +4,8 @@
 // This header is part of the Spectral Surface Mesh Deformation package, which
 // builds on CGAL but is not part of the CGAL library.
 
-#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_BASIS_PANELS_H
-#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_BASIS_PANELS_H
+#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_STORED_BASIS_H
+#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_STORED_BASIS_H
 
 #include <CGAL/Spectral_deformation/internal/available_threads.h>
 
@@ -158,7 +158,7 @@ void multiply_transpose(Eigen::Index n, Eigen::Index m, const BlockOf& block_of,
 /// iteration, read straight from it. Blocks of a few hundred rows make each
 /// of the m column pieces of a block long enough for the hardware
 /// prefetcher, so that this layout streams about as fast as a copy stored
-/// by panels (`Basis_panels`), without the copy's bytes.
+/// by panels of contiguous rows (measured), without the copy's bytes.
 ///
 /// A float basis is not a rounded copy of a double one: everything the
 /// deformation derives from H (the reduced matrices, the smooth rest shape,
@@ -248,77 +248,9 @@ private:
   bool m_single = false;
 };
 
-/// A copy of a basis H (n×m) for the same two products, cut into panels of
-/// `panel_rows` rows, each panel stored by columns in one contiguous block.
-/// `Scalar` is the storage type: `float` halves the memory and the traffic
-/// of the copy (the arithmetic stays in double).
-template <typename Scalar>
-class Basis_panels
-{
-public:
-  typedef row_blocks::Columns3 Columns3;
-  static constexpr Eigen::Index panel_rows = 128;
-
-  Basis_panels() = default;
-
-  template <typename Matrix>
-  explicit Basis_panels(const Matrix& basis) { assign(basis); }
-
-  template <typename Matrix>
-  void assign(const Matrix& basis)
-  {
-    m_rows = basis.rows();
-    m_cols = basis.cols();
-    m_data.assign(static_cast<std::size_t>(m_rows * m_cols), Scalar(0));
-    for(Eigen::Index start = 0; start < m_rows; start += panel_rows)
-      panel(start) = basis.middleRows(start, panel_height(start)).template cast<Scalar>();
-  }
-
-  Eigen::Index rows() const { return m_rows; }
-  Eigen::Index cols() const { return m_cols; }
-  std::size_t bytes() const { return m_data.size() * sizeof(Scalar); }
-
-  /// `shape` = H `coefficients` (n×3, or its transpose when `Shape` is
-  /// `row_blocks::Rows3`), `coefficients` m×3; `shape` must not alias
-  /// `coefficients`.
-  template <typename Coefficients, typename Shape>
-  void multiply(const Coefficients& coefficients, Shape& shape) const
-  {
-    row_blocks::multiply<panel_rows>(m_rows, m_cols, block_of(), coefficients, shape);
-  }
-
-  /// `result` = Hᵀ `values` (m×3), `values` n×3.
-  template <typename Values>
-  void multiply_transpose(const Values& values, Eigen::MatrixXd& result) const
-  {
-    row_blocks::multiply_transpose<panel_rows>(m_rows, m_cols, block_of(), values, result);
-  }
-
-private:
-  auto block_of() const
-  {
-    return [this](Eigen::Index start, Eigen::Index) { return panel(start); };
-  }
-
-  Eigen::Index panel_height(Eigen::Index start) const { return (std::min)(panel_rows, m_rows - start); }
-
-  Eigen::Map<Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>> panel(Eigen::Index start)
-  {
-    return {m_data.data() + start * m_cols, panel_height(start), m_cols};
-  }
-  Eigen::Map<const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>> panel(Eigen::Index start) const
-  {
-    return {m_data.data() + start * m_cols, panel_height(start), m_cols};
-  }
-
-  Eigen::Index m_rows = 0;
-  Eigen::Index m_cols = 0;
-  std::vector<Scalar> m_data;
-};
-
 } // namespace Linear_algebra
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
 
-#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_BASIS_PANELS_H
+#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_STORED_BASIS_H
