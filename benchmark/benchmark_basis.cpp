@@ -32,9 +32,7 @@
 #include <CGAL/Manifold_harmonics_basis.h>
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
-#include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
-#include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
-#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
+#include <CGAL/Spectral_deformation/cotangent_operators.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -316,7 +314,6 @@ void report_progress(const std::string& what, const std::string& phase, int run,
 Case_result run_case(const Mesh& mesh, int m, int repetitions, int cheap_repetitions,
                      const std::string& what)
 {
-  namespace SD = CGAL::Spectral_deformation::internal;
   Case_result result;
 
   // The basis first, while the process holds only the mesh, so that the
@@ -337,34 +334,34 @@ Case_result run_case(const Mesh& mesh, int m, int repetitions, int cheap_repetit
   }
   result.peak_kib = proc_field_kib("/proc/self/status", "VmHWM");
 
-  // Assembly of Q and M, as the constructor does it (in huge pages, as with
-  // the tuned eigensolver). The results of the previous run are released
-  // outside of the timed region.
+  // Assembly of Q and M with the package's public operators (each checks the
+  // mesh). The results of the previous run are released outside of the
+  // timed region.
   Eigen::SparseMatrix<double> stiffness;
   Eigen::VectorXd mass;
   for(int run = 1; run <= cheap_repetitions; ++run)
   {
-    SD::Mesh::Triangle_arrays arrays;
-    Eigen::SparseMatrix<double> Q;
-    Eigen::VectorXd M;
+    Eigen::SparseMatrix<double> Q, M;
     result.assembly.values.push_back(seconds_of([&] {
-      arrays = SD::Mesh::extract_triangle_arrays(mesh, CGAL::parameters::default_values());
-      Q = SD::cotangent_stiffness(arrays, true);
-      M = SD::lumped_mass(arrays);
+      Q = CGAL::cotangent_stiffness_matrix(mesh);
+      M = CGAL::lumped_mass_matrix(mesh);
     }));
     stiffness.swap(Q);
-    mass.swap(M);
+    mass = M.diagonal();
   }
   report_progress(what, "assembly median of", cheap_repetitions, result.assembly.median());
 
-  // Factorization of Q - sigma M alone, with the shift that the eigensolver
-  // traits use (the cost hardly depends on its value).
-  const Eigen::SparseMatrix<double> shifted = SD::Eigensolvers::shifted_stiffness(
-      stiffness, mass, SD::Eigensolvers::shift_invert_shift(mass));
+  // Factorization of Q - sigma M alone, with a shift of the order of the one
+  // the eigensolver traits use: a hundredth of the first non-zero eigenvalue
+  // of a sphere of the same area, below zero (the cost hardly depends on its
+  // value).
+  const double sigma = -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
+  Eigen::SparseMatrix<double> shifted = stiffness;
+  for(Eigen::Index i = 0; i < mass.size(); ++i)
+    shifted.coeffRef(i, i) -= sigma * mass[i];
   for(int run = 1; run <= cheap_repetitions; ++run)
   {
     CGAL::Default_sparse_spd_solver_traits solver;
-    SD::Memory::set_process_wide_tuning_if_supported(solver, true);
     bool factored = false;
     result.factorization.values.push_back(
         seconds_of([&] { factored = solver.factor(shifted); }));

@@ -16,11 +16,12 @@
 #include "benchmark_support.h"
 
 #include <CGAL/Spectral_deformation/IO/deformation_selection.h>
-#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
+#include <CGAL/Spectral_deformation/arap_energy.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+
+#include <boost/property_map/function_property_map.hpp>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/subdivision_method_3.h>
 
@@ -49,8 +50,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef CGAL::Spectral_deformation::internal::Mesh::Positions Positions;
-typedef CGAL::Spectral_deformation::internal::Mesh::Triangle_arrays Triangle_arrays;
+typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Positions;
 typedef CGAL::IO::Deformation_vertex_status Status;
 typedef std::chrono::steady_clock Clock;
 
@@ -379,8 +379,8 @@ struct Case_geometry
 {
   Positions rest;
   double diagonal = 0;
-  Triangle_arrays arrays; // for the ARAP energy
-  std::string arrays_error;
+  Mesh mesh;               // the rest shape, for the ARAP energy
+  std::string energy_error; // why the ARAP energy cannot be measured
   std::vector<std::array<int, 3>> faces;
   // Adjacent faces whose normals make an angle below 90° − fold_margin_degrees at rest.
   std::vector<std::pair<int, int>> flat_face_pairs;
@@ -425,12 +425,12 @@ inline Case_geometry case_geometry(const Deformation_case& c)
   g.diagonal = (g.rest.colwise().maxCoeff() - g.rest.colwise().minCoeff()).norm();
   try
   {
-    g.arrays = CGAL::Spectral_deformation::internal::Mesh::extract_triangle_arrays(
-        mesh, CGAL::parameters::default_values());
+    g.mesh = mesh;
+    CGAL::arap_energy(g.mesh, get(CGAL::vertex_point, g.mesh)); // throws for a mesh it cannot measure
   }
   catch(const std::exception& e)
   {
-    g.arrays_error = e.what();
+    g.energy_error = e.what();
   }
   g.faces.resize(num_faces(mesh));
   for(auto f : faces(mesh))
@@ -515,8 +515,12 @@ inline Quality measure(const Case_geometry& g, const Positions& x)
     outside = std::max(outside, (x.row(i) - g.rest.row(i)).norm());
   q.max_outside_displacement = outside / g.diagonal;
 
-  if(g.arrays_error.empty())
-    q.arap_energy = CGAL::Spectral_deformation::internal::Deformation::arap_energy(g.arrays, x);
+  if(g.energy_error.empty())
+    q.arap_energy = CGAL::arap_energy(g.mesh, boost::make_function_property_map<vertex_descriptor>(
+                                                  [&x](vertex_descriptor v) {
+                                                    const Eigen::Index i = static_cast<Eigen::Index>(v.idx());
+                                                    return Point(x(i, 0), x(i, 1), x(i, 2));
+                                                  }));
 
   std::vector<double> change(g.moving_edges.size());
   for(std::size_t k = 0; k < g.moving_edges.size(); ++k)

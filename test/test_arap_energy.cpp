@@ -9,7 +9,7 @@
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Target_stages.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
+#include <CGAL/Spectral_deformation/arap_energy.h>
 
 #include <catch2/catch.hpp>
 

@@ -11,6 +11,7 @@
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/Partition_of_unity_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
+#include <CGAL/Spectral_deformation/arap_energy.h>
 
 #include <CGAL/Deformation_Eigen_polar_closest_rotation_traits_3.h>
 #include <CGAL/Eigen_solver_traits.h>
@@ -20,6 +21,8 @@
 #include <catch2/catch.hpp>
 
 #include <Eigen/Geometry>
+
+#include <boost/property_map/function_property_map.hpp>
 
 #include <type_traits>
 #include <vector>
@@ -244,4 +247,49 @@ TEST_CASE("type swap: a CGAL program with every template argument and a weight c
       CHECK((spectral.row(i) - target).norm() < 1e-9);
       CHECK((arap.row(i) - target).norm() < 1e-9);
     }
+}
+
+// arap_energy(): analytic values on any mesh type. A rigid motion costs
+// nothing; a scaling by s changes every edge by the factor s with the best
+// rotation the identity, so the normalized energy is (s - 1)² exactly.
+template <class Mesh>
+void check_arap_energy_of(const Mesh& mesh)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  const auto rest = get(CGAL::vertex_point, mesh);
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  auto moved = [&](double scale) {
+    return boost::make_function_property_map<vertex_descriptor>([&, scale](vertex_descriptor v) {
+      const Point& p = get(rest, v);
+      const Eigen::Vector3d x = scale * (turn * Eigen::Vector3d(p.x(), p.y(), p.z())) + Eigen::Vector3d(4, -1, 2);
+      return Point(x.x(), x.y(), x.z());
+    });
+  };
+  CHECK(CGAL::arap_energy(mesh, rest) < 1e-24);
+  CHECK(CGAL::arap_energy(mesh, moved(1.0)) < 1e-24);
+  CHECK(CGAL::arap_energy(mesh, moved(1.5)) == Approx(0.25).epsilon(1e-12));
+  CHECK(CGAL::arap_energy(mesh, moved(0.8)) == Approx(0.04).epsilon(1e-12));
+}
+
+TEST_CASE("arap_energy(): zero for a rigid motion, (s - 1)² for a scaling, on Surface_mesh and Polyhedron_3",
+          "[type_swap]")
+{
+  const Soup soup = bumpy_plane(12);
+  check_arap_energy_of(to_mesh<Surface_mesh>(soup));
+  check_arap_energy_of(to_mesh<Polyhedron>(soup));
+  // The same value on both types for a deformation that is not a similarity.
+  Surface_mesh bent = to_mesh<Surface_mesh>(soup);
+  Polyhedron bent_polyhedron = to_mesh<Polyhedron>(soup);
+  auto bend = [](const Point& p) { return Point(p.x(), p.y(), p.z() + 0.3 * p.x() * p.x()); };
+  const auto sm_rest = get(CGAL::vertex_point, bent);
+  const auto poly_rest = get(CGAL::vertex_point, bent_polyhedron);
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor SM_vertex;
+  typedef boost::graph_traits<Polyhedron>::vertex_descriptor Poly_vertex;
+  const double on_surface_mesh = CGAL::arap_energy(
+      bent, boost::make_function_property_map<SM_vertex>([&](SM_vertex v) { return bend(get(sm_rest, v)); }));
+  const double on_polyhedron = CGAL::arap_energy(
+      bent_polyhedron,
+      boost::make_function_property_map<Poly_vertex>([&](Poly_vertex v) { return bend(get(poly_rest, v)); }));
+  CHECK(on_surface_mesh > 1e-4);
+  CHECK(on_polyhedron == Approx(on_surface_mesh).epsilon(1e-12));
 }

@@ -8,7 +8,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
+#include <CGAL/Spectral_deformation/arap_energy.h>
 
 #include <catch2/catch.hpp>
 

@@ -4,7 +4,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_deformation/internal/Deformation/Spatial_dual_laplacian_solver.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
+#include <CGAL/Spectral_deformation/arap_energy.h>
 
 #include <catch2/catch.hpp>
 

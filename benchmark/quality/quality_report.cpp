@@ -28,8 +28,7 @@
 #include <CGAL/Spectral_deformation/IO/deformation_selection.h>
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/Partition_of_unity_eigensolver_traits.h>
-#include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/arap_energy.h>
+#include <CGAL/Spectral_deformation/arap_energy.h>
 #include <CGAL/Surface_mesh_deformation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -87,8 +86,24 @@
 namespace {
 
 using namespace ssmd_benchmark;
-// The deformation class's default settings (internal: the report prints them).
-typedef CGAL::Spectral_deformation::internal::Deformation::Spectral_settings Default_settings;
+// The deformation class's default settings, read from an object with its
+// defaults, so that the report follows them.
+struct Default_settings
+{
+  std::size_t rotation_patches;
+  CGAL::Spectral_smooth_energy smooth_energy;
+  double stage_angle; // degrees
+};
+
+const Default_settings& default_settings()
+{
+  static const Default_settings settings = [] {
+    Mesh empty;
+    const CGAL::Spectral_surface_mesh_deformation<Mesh> defaults(empty);
+    return Default_settings{defaults.rotation_patches(), defaults.smooth_energy(), defaults.stage_angle()};
+  }();
+  return settings;
+}
 
 // ----------------------------------------------------------------------------
 // Command line
@@ -103,9 +118,9 @@ struct Options
   std::vector<std::string> only;     // names of the cases to run; empty: all
   std::size_t frequencies = 100;
   // The class's defaults, read from its settings so that the report follows them.
-  std::size_t rotation_patches = Default_settings::default_rotation_patches; // 0: the full iteration
-  CGAL::Spectral_smooth_energy smooth_energy = Default_settings().smooth_energy; // of the iteration
-  double stage_angle = Default_settings::default_stage_angle * 180 / 3.14159265358979323846; // degrees
+  std::size_t rotation_patches = default_settings().rotation_patches; // 0: the full iteration
+  CGAL::Spectral_smooth_energy smooth_energy = default_settings().smooth_energy; // of the iteration
+  double stage_angle = default_settings().stage_angle; // degrees
   bool volume_preservation = false;       // set_volume_preservation() of the spectral algorithms
   bool partition_of_unity_basis = true; // the class's default, the approximate basis; false: the exact one
   Eigen::Index basis_samples = 0;         // of the approximate basis; 0: its default
@@ -135,7 +150,7 @@ void print_usage(const char* program)
       << "  --only a,b,...                run only the cases of these names\n"
       << "  --frequencies m               basis size of the spectral algorithms (default 100)\n"
       << "  --rotation-patches k          rotation patches of the iteration (default: the\n"
-      << "                                class's, " << Default_settings::default_rotation_patches << "; 0: the full iteration)\n"
+      << "                                class's, " << default_settings().rotation_patches << "; 0: the full iteration)\n"
       << "  --basis B                     partition-of-unity (default, the class's:\n"
       << "                                Partition_of_unity_eigensolver_traits) or exact\n"
       << "                                (Block_lanczos_eigensolver_traits)\n"
@@ -676,7 +691,7 @@ void write_definitions(std::ostream& out, const Options& options)
          "target, divided by *D*.\n"
       << "- *outside ROI*: the largest displacement of a vertex outside the ROI, divided by "
          "*D*; must be exactly 0.\n"
-      << "- *ARAP energy*: `internal::arap_energy(input, result)` on the whole mesh: "
+      << "- *ARAP energy*: `CGAL::arap_energy(input, result)` on the whole mesh: "
          "Σ w_ij ‖(x'_i − x'_j) − R_i (x_i − x_j)‖² / Σ w_ij ‖x_i − x_j‖² over the directed "
          "edges, w_ij = |cotangent weight| of the input, R_i the best rotation of the one-ring "
          "of i; 0 for a rigid motion, about the mean squared relative distortion otherwise.\n"
@@ -917,8 +932,8 @@ void run_case(const Deformation_case& c, const Options& options, unsigned int le
   report.transformation = describe_transformation(c, g);
   report.cgal_long_iterations =
       c.roi.size() > options.large_roi ? options.arap_large_iterations : options.long_iterations;
-  if(!g.arrays_error.empty())
-    std::cerr << "  warning: no ARAP energy: " << g.arrays_error << "\n";
+  if(!g.energy_error.empty())
+    std::cerr << "  warning: no ARAP energy: " << g.energy_error << "\n";
   const std::string base = options.mesh_output_directory + "/" + c.name;
   if(!options.mesh_output_directory.empty())
   {

@@ -4,8 +4,8 @@
 // This header is part of the Spectral Surface Mesh Deformation package, which
 // builds on CGAL but is not part of the CGAL library.
 
-#ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_ARAP_ENERGY_H
-#define CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_ARAP_ENERGY_H
+#ifndef CGAL_SPECTRAL_DEFORMATION_ARAP_ENERGY_H
+#define CGAL_SPECTRAL_DEFORMATION_ARAP_ENERGY_H
 
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
@@ -13,6 +13,11 @@
 #include <Eigen/Dense>
 #include <Eigen/SVD>
 
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -75,6 +80,55 @@ inline double arap_energy(const Triangle_arrays& rest, const Positions& deformed
 } // namespace Deformation
 } // namespace internal
 } // namespace Spectral_deformation
+
+/// \ingroup PkgSpectralSurfaceMeshDeformationQuality
+/// Returns the as-rigid-as-possible energy \ref ssmd-sorkine2007arap "[Sorkine and Alexa 2007]"
+/// of a deformed shape of a triangle mesh against its rest shape, as the
+/// manual's benchmarks report it: with the best rotation of every vertex's
+/// one-ring and the absolute cotangent weights of the rest shape, divided
+/// by the weighted sum of the squared rest edge lengths. It is 0 for a rigid
+/// motion of the whole mesh, does not change when the mesh is scaled, and is
+/// about the mean squared relative change of the edges otherwise: a measure
+/// of how much a deformation stretches and shears, to compare the results of
+/// several methods on the same case.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, triangulated
+/// \tparam DeformedPointMap a model of `ReadablePropertyMap` with the vertex
+///         descriptor of `TriangleMesh` as key type and a point of a CGAL
+///         kernel as value type
+/// \tparam NamedParameters a sequence of CGAL named parameters
+///
+/// \param tm the mesh, its rest shape given by its vertex point map
+/// \param deformed the positions of the vertices in the deformed shape
+/// \param np optional named parameters among: `vertex_point_map`, the rest
+///        shape (default `get(CGAL::vertex_point, tm)`), `vertex_index_map`
+///        (default: an initialized vertex index map of `tm`)
+///
+/// \throws Spectral_deformation_error (`INVALID_MESH`) when the rest shape is
+///         not a valid triangle mesh, as `cotangent_stiffness_matrix()`;
+///         (`INVALID_ARGUMENT`) when a deformed position is not finite.
+template <class TriangleMesh, class DeformedPointMap,
+          class NamedParameters = parameters::Default_named_parameters>
+double arap_energy(const TriangleMesh& tm, DeformedPointMap deformed,
+                   const NamedParameters& np = parameters::default_values())
+{
+  typedef Spectral_deformation_error Error;
+  const Spectral_deformation::internal::Mesh::Triangle_arrays rest =
+      Spectral_deformation::internal::Mesh::extract_triangle_arrays(tm, np);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  Spectral_deformation::internal::Mesh::Positions positions(rest.number_of_vertices(), 3);
+  for(auto v : vertices(tm))
+  {
+    const auto& p = get(deformed, v);
+    const Eigen::Index i = static_cast<Eigen::Index>(get(vim, v));
+    for(int k = 0; k < 3; ++k)
+      positions(i, k) = CGAL::to_double(p[k]);
+  }
+  if(!positions.allFinite())
+    throw Error(Error::INVALID_ARGUMENT, "arap_energy(): a deformed position is not finite");
+  return Spectral_deformation::internal::Deformation::arap_energy(rest, positions);
+}
+
 } // namespace CGAL
 
-#endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_DEFORMATION_ARAP_ENERGY_H
+#endif // CGAL_SPECTRAL_DEFORMATION_ARAP_ENERGY_H
