@@ -830,7 +830,7 @@ void run_spatial(const Deformation_case& c, const Case_geometry& g, const Plan& 
 // the constrained vertices (fixed ring first, then the control vertices).
 struct Region_arrays
 {
-  Triangle_arrays arrays;
+  SD::Mesh::Triangle_arrays arrays;
   std::vector<int> constrained;
   std::vector<char> is_handle; // local
   std::vector<int> vertex_of;  // local -> vertex index
