@@ -7,7 +7,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Face_patches.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Target_stages.h>
 #include <CGAL/Spectral_deformation/arap_energy.h>
 

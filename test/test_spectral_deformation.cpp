@@ -7,9 +7,9 @@
 #include <CGAL/Spectral_deformation/Pipelines_from_headers.h>
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/IO/deformation_selection.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_products.h>
 #include <CGAL/Spectral_deformation/arap_energy.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Face_patches.h>
 #include <CGAL/Spectral_deformation/internal/Basis/basis_in_region_order.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/subdivision_method_3.h>

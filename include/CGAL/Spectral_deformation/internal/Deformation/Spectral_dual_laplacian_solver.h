@@ -10,6 +10,7 @@
 #include <CGAL/Spectral_deformation/Deformation_options.h>
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Clustered_rotations.h>
+#include <CGAL/Spectral_deformation/internal/Deformation/Face_patches.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Rotated_edges.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Dense_products.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Operators_in_basis.h>
