@@ -9,6 +9,8 @@
 
 #include <CGAL/Spectral_deformation/internal/available_threads.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Farthest_point_sampling.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Galerkin_matrices.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Parallel_exception.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Spectra_lanczos.h>
 
@@ -18,11 +20,9 @@
 #include <Spectra/SymEigsShiftSolver.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cmath>
+#include <cstddef>
 #include <exception>
 #include <memory>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -62,48 +62,93 @@ struct Partition_of_unity_settings
   bool linear = true;
 };
 
-// The first exception thrown in the loop bodies of an OpenMP region, which
-// must not leave the region: the bodies after it are skipped, and
-// `rethrow()` throws it again once the region is over.
-class Parallel_exception
-{
-public:
-  template <class Body>
-  void run(Body&& body) noexcept
-  {
-    if(m_failed.load(std::memory_order_relaxed))
-      return;
-    try
-    {
-      body();
-    }
-    catch(...)
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
-      if(!m_error)
-        m_error = std::current_exception();
-      m_failed.store(true, std::memory_order_relaxed);
-    }
-  }
-
-  void rethrow() const
-  {
-    if(m_error)
-      std::rethrow_exception(m_error);
-  }
-
-private:
-  std::atomic<bool> m_failed{false};
-  std::mutex m_mutex;
-  std::exception_ptr m_error;
-};
-
 inline double wendland_bump(double t)
 {
   if(t >= 1.0)
     return 0.0;
   const double s = 1.0 - t;
   return s * s * s * s * (4.0 * t + 1.0);
+}
+
+// A vertex in the support of a sampled function, and the bump there.
+typedef std::pair<Eigen::Index, double> Support_entry;
+
+// The vertices within `radius` of each of the `samples` along the edges of
+// `graph`, with the bump there, sorted by vertex.
+inline std::vector<std::vector<Support_entry>>
+sample_supports(const Edge_length_graph& graph, const std::vector<Eigen::Index>& samples, double radius)
+{
+  const Eigen::Index k = static_cast<Eigen::Index>(samples.size());
+  std::vector<std::vector<Support_entry>> supports(static_cast<std::size_t>(k));
+
+  Parallel_exception failure;
+#ifdef _OPENMP
+#pragma omp parallel if(graph.number_of_vertices() > parallel_loop_items)
+#endif
+  {
+    std::unique_ptr<Bounded_dijkstra> search;
+    failure.run([&] { search = std::make_unique<Bounded_dijkstra>(graph); });
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 16)
+#endif
+    for(Eigen::Index s = 0; s < k; ++s)
+      failure.run([&] {
+        std::vector<Support_entry>& support = supports[static_cast<std::size_t>(s)];
+        search->run(samples[static_cast<std::size_t>(s)], radius, [&](Eigen::Index v, double d) {
+          const double bump = wendland_bump(d / radius);
+          if(bump > 0.0)
+            support.emplace_back(v, bump);
+        });
+        std::sort(support.begin(), support.end());
+      });
+  }
+  failure.rethrow();
+  return supports;
+}
+
+// The tangent plane of each support: the two principal directions of its
+// vertices, weighted by the bump. A support too small or too flat in one
+// direction to carry the linear functions keeps the constant one only
+// (its entry of `has_linear`, one per support like `tangents`, stays 0).
+inline void support_tangent_planes(const std::vector<std::vector<Support_entry>>& supports,
+                                   const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions, double radius,
+                                   std::vector<Eigen::Matrix<double, 3, 2>>& tangents,
+                                   std::vector<char>& has_linear)
+{
+  const Eigen::Index k = static_cast<Eigen::Index>(supports.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) if(positions.rows() > parallel_loop_items)
+#endif
+  for(Eigen::Index s = 0; s < k; ++s)
+  {
+    const std::vector<Support_entry>& support = supports[static_cast<std::size_t>(s)];
+    if(support.size() < 6)
+      continue;
+    double weight = 0.0;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for(const Support_entry& e : support)
+    {
+      weight += e.second;
+      mean += e.second * positions.row(e.first).transpose();
+    }
+    mean /= weight;
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for(const Support_entry& e : support)
+    {
+      const Eigen::Vector3d d = positions.row(e.first).transpose() - mean;
+      covariance += e.second * d * d.transpose();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+    eigen.computeDirect(covariance / weight);
+    // Spread along the second direction below 1 % of the radius: the
+    // support is nearly a curve, and a second linear function would be
+    // nearly a multiple of the first.
+    if(!(eigen.eigenvalues()[1] > 1e-4 * radius * radius))
+      continue;
+    tangents[static_cast<std::size_t>(s)].col(0) = eigen.eigenvectors().col(2);
+    tangents[static_cast<std::size_t>(s)].col(1) = eigen.eigenvectors().col(1);
+    has_linear[static_cast<std::size_t>(s)] = 1;
+  }
 }
 
 // The columns of P (see above), column-major with sorted rows. Throws
@@ -116,80 +161,19 @@ partition_of_unity_functions(const Edge_length_graph& graph,
 {
   const Eigen::Index n = graph.number_of_vertices();
   const Eigen::Index k = static_cast<Eigen::Index>(samples.size());
-  typedef std::pair<Eigen::Index, double> Entry; // vertex, bump
-  std::vector<std::vector<Entry>> supports(static_cast<std::size_t>(k));
-
-  Parallel_exception failure;
-#ifdef _OPENMP
-#pragma omp parallel if(n > parallel_loop_items)
-#endif
-  {
-    std::unique_ptr<Bounded_dijkstra> search;
-    failure.run([&] { search = std::make_unique<Bounded_dijkstra>(graph); });
-#ifdef _OPENMP
-#pragma omp for schedule(dynamic, 16)
-#endif
-    for(Eigen::Index s = 0; s < k; ++s)
-      failure.run([&] {
-        std::vector<Entry>& support = supports[static_cast<std::size_t>(s)];
-        search->run(samples[static_cast<std::size_t>(s)], radius, [&](Eigen::Index v, double d) {
-          const double bump = wendland_bump(d / radius);
-          if(bump > 0.0)
-            support.emplace_back(v, bump);
-        });
-        std::sort(support.begin(), support.end());
-      });
-  }
-  failure.rethrow();
+  const std::vector<std::vector<Support_entry>> supports = sample_supports(graph, samples, radius);
 
   Eigen::VectorXd bump_sum = Eigen::VectorXd::Zero(n);
-  for(const std::vector<Entry>& support : supports)
-    for(const Entry& e : support)
+  for(const std::vector<Support_entry>& support : supports)
+    for(const Support_entry& e : support)
       bump_sum[e.first] += e.second;
   if((bump_sum.array() <= 0.0).any())
     throw std::runtime_error("a vertex lies in no support of the sampled functions");
 
-  // The tangent plane of each support: the two principal directions of its
-  // vertices, weighted by the bump. A support too small or too flat in one
-  // direction to carry the linear functions keeps the constant one only.
   std::vector<Eigen::Matrix<double, 3, 2>> tangents(static_cast<std::size_t>(k));
   std::vector<char> has_linear(static_cast<std::size_t>(k), 0);
   if(linear)
-  {
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) if(n > parallel_loop_items)
-#endif
-    for(Eigen::Index s = 0; s < k; ++s)
-    {
-      const std::vector<Entry>& support = supports[static_cast<std::size_t>(s)];
-      if(support.size() < 6)
-        continue;
-      double weight = 0.0;
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for(const Entry& e : support)
-      {
-        weight += e.second;
-        mean += e.second * positions.row(e.first).transpose();
-      }
-      mean /= weight;
-      Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-      for(const Entry& e : support)
-      {
-        const Eigen::Vector3d d = positions.row(e.first).transpose() - mean;
-        covariance += e.second * d * d.transpose();
-      }
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-      eigen.computeDirect(covariance / weight);
-      // Spread along the second direction below 1 % of the radius: the
-      // support is nearly a curve, and a second linear function would be
-      // nearly a multiple of the first.
-      if(!(eigen.eigenvalues()[1] > 1e-4 * radius * radius))
-        continue;
-      tangents[static_cast<std::size_t>(s)].col(0) = eigen.eigenvectors().col(2);
-      tangents[static_cast<std::size_t>(s)].col(1) = eigen.eigenvectors().col(1);
-      has_linear[static_cast<std::size_t>(s)] = 1;
-    }
-  }
+    support_tangent_planes(supports, positions, radius, tangents, has_linear);
 
   std::vector<Eigen::Index> first_column(static_cast<std::size_t>(k) + 1, 0);
   Eigen::Index entries = 0;
@@ -210,13 +194,13 @@ partition_of_unity_functions(const Edge_length_graph& graph,
   Eigen::Index position = 0;
   for(Eigen::Index s = 0; s < k; ++s)
   {
-    const std::vector<Entry>& support = supports[static_cast<std::size_t>(s)];
+    const std::vector<Support_entry>& support = supports[static_cast<std::size_t>(s)];
     const Eigen::Vector3d center = positions.row(samples[static_cast<std::size_t>(s)]).transpose();
     const Eigen::Index per_sample = has_linear[static_cast<std::size_t>(s)] ? 3 : 1;
     for(Eigen::Index c = 0; c < per_sample; ++c)
     {
       outer[first_column[static_cast<std::size_t>(s)] + c] = static_cast<Storage_index>(position);
-      for(const Entry& e : support)
+      for(const Support_entry& e : support)
       {
         double value = e.second / bump_sum[e.first];
         if(c > 0)
@@ -231,188 +215,6 @@ partition_of_unity_functions(const Edge_length_graph& graph,
   }
   outer[columns] = static_cast<Storage_index>(position);
   return functions;
-}
-
-// The Galerkin matrices Pᵀ Q P and Pᵀ M P (M = diag(mass)), column by column
-// on all threads: column j is Pᵀ (Q p_j), where Q p_j lives on the support
-// of p_j and one ring around it, and Pᵀ applied to it reads the rows of P
-// there. Consecutive columns with the same support (the functions of one
-// sample) are done together, so that those rows are read once for all of
-// them. This touches far fewer entries than a general sparse product, which
-// also runs on one thread only.
-inline void galerkin_matrices(const Eigen::SparseMatrix<double>& stiffness,
-                              const Eigen::VectorXd& mass,
-                              const Eigen::SparseMatrix<double>& functions,
-                              const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows,
-                              Eigen::SparseMatrix<double>& reduced_stiffness,
-                              Eigen::SparseMatrix<double>& reduced_mass)
-{
-  typedef Eigen::SparseMatrix<double>::StorageIndex Storage_index;
-  const Eigen::Index n = functions.rows();
-  const Eigen::Index k = functions.cols();
-  const Storage_index* outer = functions.outerIndexPtr();
-  const Storage_index* inner = functions.innerIndexPtr();
-  const double* values = functions.valuePtr();
-
-  // Groups of consecutive columns with the same rows, at most `widest`.
-  const Eigen::Index widest = 4;
-  std::vector<Eigen::Index> group_start;
-  for(Eigen::Index j = 0; j < k; ++j)
-  {
-    const bool same = !group_start.empty() && j - group_start.back() < widest &&
-                      outer[j + 1] - outer[j] == outer[j] - outer[j - 1] &&
-                      std::equal(inner + outer[j], inner + outer[j + 1], inner + outer[j - 1]);
-    if(!same)
-      group_start.push_back(j);
-  }
-  const Eigen::Index groups = static_cast<Eigen::Index>(group_start.size());
-  group_start.push_back(k);
-
-  struct Column
-  {
-    std::vector<Eigen::Index> indices;
-    std::vector<double> stiffness, mass;
-  };
-  std::vector<Column> columns(static_cast<std::size_t>(k));
-
-  // The work arrays of one thread.
-  struct Work
-  {
-    Work(Eigen::Index n, Eigen::Index k, Eigen::Index widest)
-      : applied(static_cast<std::size_t>(n * widest), 0.0), reached(static_cast<std::size_t>(n), 0),
-        stiffness_sum(static_cast<std::size_t>(k * widest), 0.0),
-        mass_sum(static_cast<std::size_t>(k * widest), 0.0), touched(static_cast<std::size_t>(k), 0)
-    {}
-    std::vector<double> applied; // Q p_j, j in the group
-    std::vector<char> reached;
-    std::vector<Eigen::Index> ring;
-    std::vector<double> stiffness_sum; // Pᵀ Q p_j
-    std::vector<double> mass_sum;      // Pᵀ M p_j
-    std::vector<char> touched;
-    std::vector<Eigen::Index> touched_list;
-  };
-  Parallel_exception failure;
-#ifdef _OPENMP
-#pragma omp parallel if(n > parallel_loop_items)
-#endif
-  {
-    std::unique_ptr<Work> work;
-    failure.run([&] { work = std::make_unique<Work>(n, k, widest); });
-#ifdef _OPENMP
-#pragma omp for schedule(dynamic, 4)
-#endif
-    for(Eigen::Index g = 0; g < groups; ++g)
-      failure.run([&] {
-      std::vector<double>& applied = work->applied;
-      std::vector<char>& reached = work->reached;
-      std::vector<Eigen::Index>& ring = work->ring;
-      std::vector<double>& stiffness_sum = work->stiffness_sum;
-      std::vector<double>& mass_sum = work->mass_sum;
-      std::vector<char>& touched = work->touched;
-      std::vector<Eigen::Index>& touched_list = work->touched_list;
-      auto touch = [&](Eigen::Index i) {
-        if(!touched[static_cast<std::size_t>(i)])
-        {
-          touched[static_cast<std::size_t>(i)] = 1;
-          touched_list.push_back(i);
-        }
-      };
-      const Eigen::Index first = group_start[static_cast<std::size_t>(g)];
-      const Eigen::Index width = group_start[static_cast<std::size_t>(g) + 1] - first;
-      const Eigen::Index length = outer[first + 1] - outer[first];
-      ring.clear();
-      touched_list.clear();
-      for(Eigen::Index e = 0; e < length; ++e)
-      {
-        const Eigen::Index u = inner[outer[first] + e];
-        double p[widest];
-        for(Eigen::Index c = 0; c < width; ++c)
-          p[c] = values[outer[first + c] + e];
-        // M p_j lives on the support only.
-        for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator r(rows, u); r; ++r)
-        {
-          const Eigen::Index i = r.col();
-          touch(i);
-          const double weight = r.value() * mass[u];
-          for(Eigen::Index c = 0; c < width; ++c)
-            mass_sum[static_cast<std::size_t>(i * widest + c)] += weight * p[c];
-        }
-        for(Eigen::SparseMatrix<double>::InnerIterator q(stiffness, u); q; ++q)
-        {
-          const Eigen::Index w = q.row();
-          if(!reached[static_cast<std::size_t>(w)])
-          {
-            reached[static_cast<std::size_t>(w)] = 1;
-            ring.push_back(w);
-          }
-          for(Eigen::Index c = 0; c < width; ++c)
-            applied[static_cast<std::size_t>(w * widest + c)] += q.value() * p[c];
-        }
-      }
-      for(Eigen::Index w : ring)
-      {
-        double a[widest];
-        for(Eigen::Index c = 0; c < width; ++c)
-        {
-          a[c] = applied[static_cast<std::size_t>(w * widest + c)];
-          applied[static_cast<std::size_t>(w * widest + c)] = 0.0;
-        }
-        reached[static_cast<std::size_t>(w)] = 0;
-        for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator r(rows, w); r; ++r)
-        {
-          const Eigen::Index i = r.col();
-          touch(i);
-          for(Eigen::Index c = 0; c < width; ++c)
-            stiffness_sum[static_cast<std::size_t>(i * widest + c)] += r.value() * a[c];
-        }
-      }
-      std::sort(touched_list.begin(), touched_list.end());
-      for(Eigen::Index c = 0; c < width; ++c)
-      {
-        Column& column = columns[static_cast<std::size_t>(first + c)];
-        column.indices = touched_list;
-        column.stiffness.reserve(touched_list.size());
-        column.mass.reserve(touched_list.size());
-        for(Eigen::Index i : touched_list)
-        {
-          column.stiffness.push_back(stiffness_sum[static_cast<std::size_t>(i * widest + c)]);
-          column.mass.push_back(mass_sum[static_cast<std::size_t>(i * widest + c)]);
-          stiffness_sum[static_cast<std::size_t>(i * widest + c)] = 0.0;
-          mass_sum[static_cast<std::size_t>(i * widest + c)] = 0.0;
-        }
-      }
-      for(Eigen::Index i : touched_list)
-        touched[static_cast<std::size_t>(i)] = 0;
-      });
-  }
-  failure.rethrow();
-
-  Eigen::Index entries = 0;
-  for(const Column& column : columns)
-    entries += static_cast<Eigen::Index>(column.indices.size());
-  reduced_stiffness.resize(k, k);
-  reduced_mass.resize(k, k);
-  reduced_stiffness.resizeNonZeros(entries);
-  reduced_mass.resizeNonZeros(entries);
-  Eigen::Index position = 0;
-  for(Eigen::Index j = 0; j < k; ++j)
-  {
-    const Column& column = columns[static_cast<std::size_t>(j)];
-    reduced_stiffness.outerIndexPtr()[j] = static_cast<Storage_index>(position);
-    reduced_mass.outerIndexPtr()[j] = static_cast<Storage_index>(position);
-    for(std::size_t e = 0; e < column.indices.size(); ++e, ++position)
-    {
-      reduced_stiffness.innerIndexPtr()[position] = static_cast<Storage_index>(column.indices[e]);
-      reduced_mass.innerIndexPtr()[position] = static_cast<Storage_index>(column.indices[e]);
-      reduced_stiffness.valuePtr()[position] = column.stiffness[e];
-      reduced_mass.valuePtr()[position] = column.mass[e];
-    }
-  }
-  reduced_stiffness.outerIndexPtr()[k] = static_cast<Storage_index>(position);
-  reduced_mass.outerIndexPtr()[k] = static_cast<Storage_index>(position);
-  // Sums of rounded products are not exactly symmetric.
-  reduced_stiffness = 0.5 * (reduced_stiffness + Eigen::SparseMatrix<double>(reduced_stiffness.transpose()));
-  reduced_mass = 0.5 * (reduced_mass + Eigen::SparseMatrix<double>(reduced_mass.transpose()));
 }
 
 // H = P Y by panels of rows on all threads: each panel of H is summed in a
