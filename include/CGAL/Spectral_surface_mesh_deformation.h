@@ -11,6 +11,7 @@
 #include <CGAL/Spectral_deformation/Block_lanczos_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/Deformation_options.h>
 #include <CGAL/Spectral_deformation/Deformation_reports.h>
+#include <CGAL/Spectral_deformation/Roi_and_control_vertices.h>
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
 #include <CGAL/Spectral_deformation/Spectral_parameters.h>
@@ -66,6 +67,8 @@ namespace CGAL {
 ///
 /// **Parameters** that only the spectral algorithms have, and the basis
 /// cache, are the functions of the base `Spectral_deformation::Spectral_parameters`.
+/// The functions of the ROI, the control vertices and their targets are
+/// those of the base `Spectral_deformation::Roi_and_control_vertices`.
 ///
 /// **Defaults**: 100 frequencies, constraint weight 1, at most 10 iterations,
 /// tolerance 1e-4 on the relative step, `EXACT_CONSTRAINTS` (the semantics of
@@ -123,17 +126,22 @@ template <class TM,
           class Reserved = Default,
           class VPM = Default>
 class Spectral_surface_mesh_deformation
-  : public Spectral_deformation::Spectral_parameters<
+  : public Spectral_deformation::Roi_and_control_vertices<
         TM,
         typename Spectral_deformation::internal::Deformation::Deformation_class_types<TM, VIM, HIM, TAG, ET, ST,
                                                                                      VPM>::Eigensolver_traits,
         typename Spectral_deformation::internal::Deformation::Deformation_class_types<TM, VIM, HIM, TAG, ET, ST,
-                                                                                     VPM>::Computation>
+                                                                                     VPM>::Computation,
+        typename Spectral_deformation::internal::Deformation::Deformation_class_types<TM, VIM, HIM, TAG, ET, ST,
+                                                                                     VPM>::Selection>
 {
   typedef Spectral_deformation::internal::Deformation::Deformation_class_types<TM, VIM, HIM, TAG, ET, ST, VPM> Types;
   typedef typename Types::Computation Computation;
-  typedef Spectral_deformation::Spectral_parameters<TM, typename Types::Eigensolver_traits, Computation> Base;
+  typedef Spectral_deformation::Roi_and_control_vertices<TM, typename Types::Eigensolver_traits, Computation,
+                                                         typename Types::Selection>
+      Base;
   using Base::m_computation;
+  using Base::m_selection;
   static constexpr bool is_spectral = Computation::is_spectral;
 
 public:
@@ -164,10 +172,6 @@ public:
 
   /// @}
 
-private:
-  typedef typename Types::Selection Selection;
-
-public:
   /// The algorithm that `TAG` selects: `TAG` itself when it is a
   /// `Spectral_deformation_algorithm_tag`, `SPECTRAL_DUAL_LAPLACIAN` when it
   /// is one of CGAL's tags.
@@ -204,7 +208,7 @@ public:
                                     Vertex_index_map vertex_index_map,
                                     Hedge_index_map hedge_index_map,
                                     Vertex_point_map vertex_point_map)
-    : m_selection(triangle_mesh, vertex_index_map, vertex_point_map), m_him(hedge_index_map)
+    : Base(triangle_mesh, vertex_index_map, vertex_point_map), m_him(hedge_index_map)
   {}
 
   /// Creates a deformation object for `triangle_mesh` with an initialized
@@ -257,181 +261,6 @@ public:
   Spectral_surface_mesh_deformation(const Spectral_surface_mesh_deformation&) = delete;
   /// Not assignable, as in CGAL.
   Spectral_surface_mesh_deformation& operator=(const Spectral_surface_mesh_deformation&) = delete;
-
-  /// @}
-
-  /// \name Region of interest and control vertices
-  /// @{
-
-  /// Erases all the vertices from the region of interest (control vertices included).
-  void clear_roi_vertices()
-  {
-    m_selection.clear_roi();
-    m_computation.roi_changed();
-  }
-
-  /// Erases all the vertices from the set of control vertices.
-  void clear_control_vertices()
-  {
-    m_selection.clear_controls();
-    m_computation.constraints_changed();
-  }
-
-  /// Inserts `vd` in the set of control vertices, and in the ROI if needed
-  /// (which changes the region). Its target is its current position. Returns
-  /// `true` if `vd` was not a control vertex.
-  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `vd` is not
-  ///         a vertex of the mesh (null, removed, or an index out of range).
-  bool insert_control_vertex(vertex_descriptor vd)
-  {
-    if(is_control_vertex(vd))
-      return false;
-    insert_roi_vertex(vd);
-    m_selection.insert_control(vd);
-    m_computation.constraints_changed();
-    return true;
-  }
-
-  /// Inserts the vertices of `[begin, end)` in the set of control vertices.
-  /// \tparam InputIterator an input iterator with `vertex_descriptor` as value type
-  template <class InputIterator>
-  void insert_control_vertices(InputIterator begin, InputIterator end)
-  {
-    for(; begin != end; ++begin)
-      insert_control_vertex(*begin);
-  }
-
-  /// Erases `vd` from the set of control vertices (it stays in the ROI).
-  /// Returns `true` if `vd` was a control vertex.
-  bool erase_control_vertex(vertex_descriptor vd)
-  {
-    if(!m_selection.erase_control(vd))
-      return false;
-    m_computation.constraints_changed();
-    return true;
-  }
-
-  /// Inserts the vertices of `[begin, end)` in the ROI.
-  /// \tparam InputIterator an input iterator with `vertex_descriptor` as value type
-  template <class InputIterator>
-  void insert_roi_vertices(InputIterator begin, InputIterator end)
-  {
-    for(; begin != end; ++begin)
-      insert_roi_vertex(*begin);
-  }
-
-  /// Inserts `vd` in the ROI. Returns `true` if it was not in it; the region
-  /// is then rebuilt, basis included, by the next `preprocess()`.
-  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when `vd` is not
-  ///         a vertex of the mesh (null, removed, or an index out of range).
-  bool insert_roi_vertex(vertex_descriptor vd)
-  {
-    if(!m_selection.insert_roi(vd))
-      return false;
-    m_computation.roi_changed();
-    return true;
-  }
-
-  /// Erases `vd` from the ROI and from the control vertices. At the next
-  /// `preprocess()`, a vertex no longer in the ROI is put back at its initial
-  /// position. Returns `true` if `vd` was in the ROI.
-  bool erase_roi_vertex(vertex_descriptor vd)
-  {
-    if(!m_selection.erase_roi(vd))
-      return false;
-    m_computation.roi_changed();
-    return true;
-  }
-
-  /// Prepares `deform()` for the current ROI and control vertices; called by
-  /// `deform()` when needed. Builds the region (basis, reduced matrices,
-  /// detail transfer) when the ROI, the initial geometry or the number of
-  /// frequencies changed, then factors the systems of the constraint set.
-  /// Returns at once when nothing changed since its last success.
-  ///
-  /// Returns `false`, with the reason in `preprocess_report().message`, when
-  /// the ROI is empty, there is no constraint at all, a connected part of the
-  /// region has no constrained vertex, the region is not a valid triangle
-  /// mesh (degenerate faces, non-manifold edges, ...), or a numerical step
-  /// fails. The mesh is never modified by `preprocess()`, except that
-  /// vertices erased from the ROI return to their initial positions.
-  bool preprocess() { return m_computation.preprocess(m_selection); }
-
-  /// @}
-
-  /// \name Targets
-  /// @{
-
-  /// Sets the target position of the control vertex `vd`; does nothing when
-  /// `vd` is not a control vertex.
-  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when
-  ///         `target_position` is not finite (the target is then unchanged).
-  void set_target_position(vertex_descriptor vd, const Point& target_position)
-  {
-    if(is_control_vertex(vd))
-      m_selection.set_target(vd, target_position);
-  }
-
-  /// Translates the target of the control vertex `vd` by `t`; does nothing
-  /// when `vd` is not a control vertex.
-  /// \tparam Vect a 3D vector with `operator[](int)` and a constructor from three coordinates
-  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when the new
-  ///         target is not finite.
-  template <class Vect>
-  void translate(vertex_descriptor vd, const Vect& t)
-  {
-    if(!is_control_vertex(vd))
-      return;
-    const Point& p = m_selection.target(vd);
-    set_target_position(vd, Point(p[0] + t[0], p[1] + t[1], p[2] + t[2]));
-  }
-
-  /// Translates the targets of the control vertices of `[begin, end)` by `t`
-  /// (see the single-vertex overload).
-  template <class InputIterator, class Vect>
-  void translate(InputIterator begin, InputIterator end, const Vect& t)
-  {
-    for(; begin != end; ++begin)
-      translate(*begin, t);
-  }
-
-  /// Rotates the target of the control vertex `vd` by `quat` around the
-  /// point at `to_rotation_center` from the origin (cumulative, as in CGAL);
-  /// does nothing when `vd` is not a control vertex.
-  /// \tparam Quaternion a quaternion with `Vect operator*(Quaternion, Vect)`
-  /// \tparam Vect a 3D vector with `operator[](int)` and a constructor from three coordinates
-  /// \throws Spectral_deformation_error (`INVALID_ARGUMENT`) when the new
-  ///         target is not finite.
-  template <typename Quaternion, typename Vect>
-  void rotate(vertex_descriptor vd, const Vect& to_rotation_center, const Quaternion& quat)
-  {
-    if(!is_control_vertex(vd))
-      return;
-    const Point& p = m_selection.target(vd);
-    const Vect relative(p[0] - to_rotation_center[0], p[1] - to_rotation_center[1],
-                        p[2] - to_rotation_center[2]);
-    const Vect v = quat * relative;
-    set_target_position(vd, Point(to_rotation_center[0] + v[0], to_rotation_center[1] + v[1],
-                                  to_rotation_center[2] + v[2]));
-  }
-
-  /// Rotates the targets of the control vertices of `[begin, end)` (see the
-  /// single-vertex overload).
-  template <typename InputIterator, typename Vect, typename Quaternion>
-  void rotate(InputIterator begin, InputIterator end, const Vect& to_rotation_center,
-              const Quaternion& quat)
-  {
-    for(; begin != end; ++begin)
-      rotate(*begin, to_rotation_center, quat);
-  }
-
-  /// The target position of the control vertex `vd`.
-  /// \pre `vd` is a control vertex (as in CGAL).
-  const Point& target_position(vertex_descriptor vd)
-  {
-    CGAL_precondition(is_control_vertex(vd));
-    return m_selection.target(vd);
-  }
 
   /// @}
 
@@ -619,7 +448,6 @@ public:
 private:
   static Point to_point(const Eigen::RowVector3d& x) { return Point(x[0], x[1], x[2]); }
 
-  Selection m_selection;
   Hedge_index_map m_him;
   unsigned int m_iterations = 10;
   double m_tolerance = 1e-4;
