@@ -47,9 +47,12 @@ check_present() {
 
 # The consumer is built without a build type (no optimization): the compile
 # time is that of the package's headers, the run is on a tiny mesh. The five
-# builds are configured one after the other, compiled as many at a time as
-# there are cores, then checked one after the other.
+# combinations are configured one after the other, the two built ones
+# compiled as many at a time as there are cores, then all checked one after
+# the other.
 all_components=("" "CHOLMOD" "OpenMP" "OpenBLAS" "CHOLMOD;OpenBLAS;OpenMP")
+built_components=("" "CHOLMOD;OpenBLAS;OpenMP")
+is_built() { [ "$1" = "" ] || [ "$1" = "CHOLMOD;OpenBLAS;OpenMP" ]; }
 consumer_dir() { echo "$work/consumer_$(tr ';' '_' <<<"${1:-none}")"; }
 builds_start=$(date +%s)
 for components in "${all_components[@]}"; do
@@ -62,7 +65,7 @@ for components in "${all_components[@]}"; do
     fail "${components:-no component}" "configuration failed"
   fi
 done
-for components in "${all_components[@]}"; do consumer_dir "$components"; done |
+for components in "${built_components[@]}"; do consumer_dir "$components"; done |
   xargs -P "$(nproc)" -I{} sh -c 'cmake --build "{}" >>"{}.log" 2>&1 || touch "{}.failed"'
 echo "consumer builds: $(( $(date +%s) - builds_start )) s"
 
@@ -87,8 +90,12 @@ for components in "${all_components[@]}"; do
   check_present "$label" "$link_line" 'openblas' "$(wants OpenBLAS)" "OpenBLAS on the link line"
   check_present "$label" "$link_line" 'SSMD_compiled_core' 1 "compiled core on the link line"
 
-  output="$("$build/consumer")" || { echo "$output"; fail "$label" "the consumer failed"; }
-  echo "consumer [$label]: $output"
+  if is_built "$components"; then
+    output="$("$build/consumer")" || { echo "$output"; fail "$label" "the consumer failed"; }
+    echo "consumer [$label]: $output"
+  else
+    echo "consumer [$label]: compile and link lines checked"
+  fi
 done
 
 # CGAL's version file accepts only the major version asked for: the package
