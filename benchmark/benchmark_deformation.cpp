@@ -24,10 +24,12 @@
 //     the detail transfer is reported by the package;
 //   - to convergence: deform(cap, 1e-4) from the rest shape;
 //   - peak memory.
-// On one case (the target case, by default the armadillo arm on about 100k
-// vertices) the iteration is also taken apart: two streaming passes over the
-// basis matrix H (HᵀX and HY with X n×3, Y m×3), the dual-mesh evaluation,
-// the sparse products, the detail transfer.
+// One case (the target case, by default the armadillo arm on about 100k
+// vertices) gives the table of targets. The iteration taken apart (passes
+// over the basis matrix H, the dual-mesh evaluation, the sparse products, the
+// detail transfer) is the micro-benchmark benchmark_iteration_anatomy, the
+// only one that reaches into the package's internals; this program uses the
+// public API only.
 //
 // Every algorithm of every case runs in a child process of its own (fork),
 // started when the process holds the case (mesh, selection, quality
@@ -38,10 +40,6 @@
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
-#include <CGAL/Spectral_deformation/internal/Mesh/Dual_mesh_operator.h>
-#include <CGAL/Spectral_deformation/internal/Deformation/Spectral_dual_laplacian_solver.h>
-#include <CGAL/Spectral_deformation/internal/Basis/basis_io.h>
 #include <CGAL/Surface_mesh_deformation.h>
 #include <CGAL/Deformation_Eigen_polar_closest_rotation_traits_3.h>
 
@@ -91,7 +89,6 @@
 namespace {
 
 using namespace ssmd_benchmark;
-namespace SD = CGAL::Spectral_deformation::internal;
 
 // ----------------------------------------------------------------------------
 // Command line
@@ -127,7 +124,6 @@ struct Options
   double tolerance = 1e-4;
   std::string target_case = "armadillo_arm@1";
   unsigned int target_cgal_cap = 400; // CGAL's cap to its tolerance on the target case
-  int anatomy_repetitions = 11;
   std::string figure5_case = "armadillo_arm@0";
   std::vector<int> figure5_frequencies = {50, 100, 150, 200, 250, 300, 350, 400, 450, 500};
   std::vector<int> figure5_eigensolves = {50, 100, 200, 300, 500};
@@ -161,7 +157,7 @@ void print_usage(const char* program)
       << "                              above R1 ROI vertices, C above R2, D above R3\n"
       << "                              (default 1000,20000,100,250000,30,1000000,10)\n"
       << "  --package-cap N             cap of this package's runs to convergence (default 1000)\n"
-      << "  --target-case NAME@LEVEL    the case of the targets and of the iteration anatomy\n"
+      << "  --target-case NAME@LEVEL    the case of the targets\n"
       << "                              (default armadillo_arm@1)\n"
       << "  --target-cgal-cap N         CGAL's cap to its tolerance on the target case (default 400)\n"
       << "  --figure5-case NAME@LEVEL   the case of Figure 5 (default armadillo_arm@0); none: skip\n"
@@ -825,200 +821,10 @@ void run_spatial(const Deformation_case& c, const Case_geometry& g, const Plan& 
   row.values["load"] = load_average();
 }
 
-// The region of the class (faces with a ROI vertex, local indices in the
-// order of the vertex indices), as Triangle_arrays, and the local indices of
-// the constrained vertices (fixed ring first, then the control vertices).
-struct Region_arrays
-{
-  SD::Mesh::Triangle_arrays arrays;
-  std::vector<int> constrained;
-  std::vector<char> is_handle; // local
-  std::vector<int> vertex_of;  // local -> vertex index
-};
-
-Region_arrays region_arrays(const Deformation_case& c)
-{
-  Region_arrays r;
-  const Mesh& mesh = c.mesh;
-  const std::size_t n = num_vertices(mesh);
-  std::vector<char> in_region(n, 0);
-  std::vector<std::array<std::size_t, 3>> faces_of_region;
-  for(auto f : faces(mesh))
-  {
-    std::array<std::size_t, 3> t;
-    int k = 0;
-    bool touches = false;
-    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
-    {
-      t[static_cast<std::size_t>(k)] = target(h, mesh).idx();
-      touches = touches || c.status[t[static_cast<std::size_t>(k)]] != CGAL::IO::FIXED_VERTEX;
-      ++k;
-    }
-    if(!touches)
-      continue;
-    faces_of_region.push_back(t);
-    for(std::size_t i : t)
-      in_region[i] = 1;
-  }
-  std::vector<int> local(n, -1);
-  for(std::size_t i = 0; i < n; ++i)
-    if(in_region[i])
-    {
-      local[i] = static_cast<int>(r.vertex_of.size());
-      r.vertex_of.push_back(static_cast<int>(i));
-    }
-  const Eigen::Index size = static_cast<Eigen::Index>(r.vertex_of.size());
-  r.arrays.positions.resize(size, 3);
-  r.is_handle.assign(r.vertex_of.size(), 0);
-  for(Eigen::Index i = 0; i < size; ++i)
-  {
-    const Point& p = mesh.point(vertex_descriptor(static_cast<Mesh::size_type>(r.vertex_of[static_cast<std::size_t>(i)])));
-    r.arrays.positions.row(i) << p.x(), p.y(), p.z();
-  }
-  r.arrays.triangles.resize(static_cast<Eigen::Index>(faces_of_region.size()), 3);
-  for(std::size_t f = 0; f < faces_of_region.size(); ++f)
-    for(int k = 0; k < 3; ++k)
-      r.arrays.triangles(static_cast<Eigen::Index>(f), k) = local[faces_of_region[f][static_cast<std::size_t>(k)]];
-  for(std::size_t i = 0; i < r.vertex_of.size(); ++i)
-    if(c.status[static_cast<std::size_t>(r.vertex_of[i])] == CGAL::IO::FIXED_VERTEX)
-      r.constrained.push_back(static_cast<int>(i));
-  for(std::size_t i = 0; i < r.vertex_of.size(); ++i)
-    if(c.status[static_cast<std::size_t>(r.vertex_of[i])] == CGAL::IO::HANDLE_VERTEX)
-    {
-      r.constrained.push_back(static_cast<int>(i));
-      r.is_handle[i] = 1;
-    }
-  return r;
-}
-
-template <class Function>
-void time_into(Row_result& row, const std::string& name, int repetitions, Function&& function)
-{
-  for(int run = 0; run < repetitions; ++run)
-    row.samples[name].values.push_back(seconds_of(function));
-}
-
-/// The iteration of the spectral solver taken apart, on the basis of the
-/// class (saved and read back), with the internal solver of the package.
-template <class Deformation>
-void measure_anatomy(Deformation& d, const Deformation_case& c, int repetitions, Bundle& bundle)
-{
-  Row_result& row = bundle.add("anatomy");
-  std::stringstream cache;
-  d.save_basis(cache);
-  const SD::Basis::Basis_data data = SD::Basis::read_basis(cache);
-  const Eigen::MatrixXd& H = data.basis;
-  const Eigen::Index n = H.rows(), m = H.cols();
-  row.values["n"] = static_cast<double>(n);
-  row.values["m"] = static_cast<double>(m);
-  double sink = 0;
-
-  // Two streaming passes over H, as in an iteration: HᵀX (n×3 -> m×3) and HY.
-  const Eigen::MatrixXd X = Eigen::MatrixXd::Random(n, 3);
-  const Eigen::MatrixXd Y = Eigen::MatrixXd::Random(m, 3);
-  time_into(row, "pass_HtX", repetitions, [&] {
-    const Eigen::MatrixXd r = H.transpose() * X;
-    sink += r(0, 0);
-  });
-  time_into(row, "pass_HY", repetitions, [&] {
-    const SD::Mesh::Positions r = H * Y;
-    sink += r(0, 0);
-  });
-  // A pure read of H (the sum of its entries): the streaming bandwidth.
-  time_into(row, "read_H", repetitions, [&] { sink += H.sum(); });
-  // The same two products as the package's solver makes them
-  // (internal::Stored_basis), in double and in float.
-  SD::Linear_algebra::Stored_basis panels;
-  panels.assign(Eigen::MatrixXd(H), false);
-  {
-    SD::Linear_algebra::Stored_basis panels_float;
-    panels_float.assign(Eigen::MatrixXd(H), true);
-    SD::Mesh::Positions S;
-    Eigen::MatrixXd P;
-    time_into(row, "panel_HY", repetitions, [&] { panels.multiply(Y, S); sink += S(0, 0); });
-    time_into(row, "panel_HtX", repetitions, [&] { panels.multiply_transpose(X, P); sink += P(0, 0); });
-    time_into(row, "panel_HY_float", repetitions, [&] { panels_float.multiply(Y, S); sink += S(0, 0); });
-    time_into(row, "panel_HtX_float", repetitions,
-              [&] { panels_float.multiply_transpose(X, P); sink += P(0, 0); });
-  }
-
-  // The internal solver on the same region and basis.
-  const Region_arrays region = region_arrays(c);
-  row.values["fingerprint_matches"] = (SD::Mesh::fingerprint(region.arrays) == data.fingerprint) ? 1.0 : 0.0;
-  if(SD::Mesh::fingerprint(region.arrays) != data.fingerprint || region.arrays.positions.rows() != n)
-    throw std::runtime_error("anatomy: the region rebuilt here is not the region of the class");
-  SD::Linear_algebra::Stored_basis stored;
-  stored.assign(Eigen::MatrixXd(H), false);
-  SD::Deformation::Spectral_dual_laplacian_solver solver;
-  solver.initialize(stored, data.mass, region.arrays);
-  if(!solver.preprocess(region.constrained, 1.0))
-    throw std::runtime_error("anatomy: the reduced system is not positive definite");
-  const SD::Mesh::Positions& smooth = solver.smooth_rest();
-  SD::Mesh::Positions smooth_targets(static_cast<Eigen::Index>(region.constrained.size()), 3);
-  const Eigen::Matrix3d R = c.transformation.topLeftCorner<3, 3>();
-  const Eigen::Vector3d t = c.transformation.topRightCorner<3, 1>();
-  for(std::size_t k = 0; k < region.constrained.size(); ++k)
-  {
-    const int i = region.constrained[k];
-    const Eigen::Vector3d p = smooth.row(i).transpose();
-    const Eigen::Vector3d q = region.is_handle[static_cast<std::size_t>(i)] ? Eigen::Vector3d(R * p + t) : p;
-    smooth_targets.row(static_cast<Eigen::Index>(k)) = q.transpose();
-  }
-  Eigen::MatrixXd coefficients;
-  for(int run = 0; run < repetitions; ++run)
-  {
-    Eigen::MatrixXd one = solver.rest_coefficients(), ten = solver.rest_coefficients();
-    const double t1 = seconds_of([&] { solver.solve(smooth_targets, one, 0, 0.0); });
-    const double t10 = seconds_of([&] { solver.solve(smooth_targets, ten, 9, 0.0); });
-    row.samples["solver_iteration"].values.push_back((t10 - t1) / 9.0);
-    coefficients = ten;
-  }
-
-  // The steps of one iteration, at the state after 10 solves, with the
-  // kernels of the solver.
-  const SD::Mesh::Dual_mesh_operator& dual = solver.dual_mesh();
-  const SD::Mesh::Dual_coordinates rest = dual.evaluate(smooth);
-  const Eigen::VectorXd negative_heights = -rest.heights;
-  SD::Mesh::Positions shape;
-  time_into(row, "step_shape", repetitions, [&] { panels.multiply(coefficients, shape); });
-  SD::Mesh::Positions centroids, normals = rest.normals;
-  time_into(row, "step_dual", repetitions, [&] { dual.update_normals(shape, centroids, normals); });
-  SD::Mesh::Positions faces, spread;
-  time_into(row, "step_sparse", repetitions,
-            [&] { dual.apply_transpose(rest.weights, negative_heights, normals, faces, spread); });
-  Eigen::MatrixXd projected;
-  time_into(row, "step_project", repetitions, [&] { panels.multiply_transpose(spread, projected); });
-  const Eigen::LLT<Eigen::MatrixXd> llt(Eigen::MatrixXd(Eigen::MatrixXd::Identity(m, m) * 2.0));
-  time_into(row, "step_reduced_solve", repetitions, [&] {
-    const Eigen::MatrixXd next = llt.solve(projected);
-    sink += next(0, 0);
-  });
-  row.values["dual_rows"] = static_cast<double>(dual.number_of_rows());
-
-  // The detail transfer of the exact policy, taken apart.
-  SD::Deformation::Detail_transfer<CGAL::Default_sparse_spd_solver_traits> transfer;
-  transfer.initialize(region.arrays, smooth);
-  std::vector<char> prescribed(static_cast<std::size_t>(n), 0);
-  for(int i : region.constrained)
-    prescribed[static_cast<std::size_t>(i)] = 1;
-  if(!transfer.prepare_dirichlet(prescribed))
-    throw std::runtime_error("anatomy: the detail transfer factorization failed");
-  SD::Mesh::Positions prescribed_positions = region.arrays.positions;
-  SD::Mesh::Positions result;
-  time_into(row, "transfer_shape", repetitions, [&] { panels.multiply(coefficients, shape); });
-  time_into(row, "transfer_rhs", repetitions, [&] {
-    const Eigen::MatrixXd rhs = transfer.right_hand_side(shape);
-    sink += rhs(0, 0);
-  });
-  time_into(row, "transfer_exact", repetitions,
-            [&] { transfer.transfer_exact(shape, prescribed_positions, result); });
-  row.values["sink"] = sink == 12345.678 ? 1.0 : 0.0; // keeps the products alive
-}
-
 /// The spectral solver with `m` frequencies, both policies on one object
 /// (one eigensolve): the soft policy first, then the exact one.
 void run_spectral(const Deformation_case& c, const Case_geometry& g, const Plan& plan, int m,
-                  bool anatomy, int anatomy_repetitions, Bundle& bundle)
+                  Bundle& bundle)
 {
   typedef Package_deformation<CGAL::SPECTRAL_DUAL_LAPLACIAN> Deformation;
   const std::string suffix = "_" + std::to_string(m);
@@ -1083,12 +889,6 @@ void run_spectral(const Deformation_case& c, const Case_geometry& g, const Plan&
     r.values["load"] = load_average();
   }
 
-  if(anatomy)
-  {
-    std::cerr << "    iteration anatomy" << std::endl;
-    measure_anatomy(d, c, anatomy_repetitions, bundle);
-  }
-
   // Per mesh with the basis from a cache: the same first preprocess() on new
   // objects, the basis read by load_basis() instead of computed.
   std::stringstream cache;
@@ -1119,55 +919,40 @@ void run_spectral(const Deformation_case& c, const Case_geometry& g, const Plan&
   progress(row(soft_index).key, row(soft_index), "first_cached");
 }
 
-/// Figure 5: the phases against m on one case, with the basis of the largest
-/// m truncated (the first m eigenvectors are the basis with m frequencies, up
-/// to the order within repeated eigenvalues); the eigensolve itself is timed
-/// for some m.
+/// Figure 5: the phases against m on one case. The basis of every m is
+/// computed (the eigensolve timed for the m of `eigensolves`), saved and
+/// loaded into a new object, whose phases are then timed.
 void run_figure5(const Deformation_case& c, const Case_geometry& g, const Plan& plan,
                  const std::vector<int>& frequencies, const std::vector<int>& eigensolves,
                  Bundle& bundle)
 {
   typedef Package_deformation<CGAL::SPECTRAL_DUAL_LAPLACIAN> Deformation;
   Mesh mesh = c.mesh;
-  const int largest = std::max(*std::max_element(frequencies.begin(), frequencies.end()),
-                               *std::max_element(eigensolves.begin(), eigensolves.end()));
-  std::vector<int> solves = eigensolves;
-  if(std::find(solves.begin(), solves.end(), largest) == solves.end())
-    solves.push_back(largest);
-  std::sort(solves.begin(), solves.end());
-  SD::Basis::Basis_data data;
-  for(int m : solves)
+  std::set<int> all(frequencies.begin(), frequencies.end());
+  all.insert(eigensolves.begin(), eigensolves.end());
+  for(int m : all)
   {
-    Row_result& row = bundle.add("figure5_eigensolve_" + std::to_string(m));
-    Deformation d(mesh);
-    select_vertices(d, c);
-    d.set_number_of_frequencies(static_cast<std::size_t>(m));
-    d.set_constraint_policy(CGAL::SOFT_CONSTRAINTS);
-    allow_process_wide_tuning(d);
-    if(!d.preprocess())
-      throw std::runtime_error("preprocess() failed: " + d.preprocess_report().message);
-    row.samples["eigensolve"].values.push_back(d.preprocess_report().basis_seconds);
-    row.values["m"] = m;
-    std::cerr << "    figure 5: eigensolve m = " << m << ": " << d.preprocess_report().basis_seconds
-              << " s" << std::endl;
-    if(m == largest)
-    {
-      std::stringstream cache;
-      d.save_basis(cache);
-      data = SD::Basis::read_basis(cache);
-    }
-  }
-  for(int m : frequencies)
-  {
-    SD::Basis::Basis_data truncated;
-    truncated.eigenvalues = data.eigenvalues.head(m);
-    truncated.basis = data.basis.leftCols(m);
-    truncated.mass = data.mass;
-    truncated.number_of_faces = data.number_of_faces;
-    truncated.fingerprint = data.fingerprint;
     std::stringstream cache;
-    SD::Basis::write_basis(cache, truncated);
-    truncated = SD::Basis::Basis_data();
+    {
+      Deformation d(mesh);
+      select_vertices(d, c);
+      d.set_number_of_frequencies(static_cast<std::size_t>(m));
+      d.set_constraint_policy(CGAL::SOFT_CONSTRAINTS);
+      allow_process_wide_tuning(d);
+      if(!d.preprocess())
+        throw std::runtime_error("preprocess() failed: " + d.preprocess_report().message);
+      if(std::find(eigensolves.begin(), eigensolves.end(), m) != eigensolves.end())
+      {
+        Row_result& row = bundle.add("figure5_eigensolve_" + std::to_string(m));
+        row.samples["eigensolve"].values.push_back(d.preprocess_report().basis_seconds);
+        row.values["m"] = m;
+      }
+      std::cerr << "    figure 5: eigensolve m = " << m << ": " << d.preprocess_report().basis_seconds
+                << " s" << std::endl;
+      d.save_basis(cache);
+    }
+    if(std::find(frequencies.begin(), frequencies.end(), m) == frequencies.end())
+      continue;
 
     Deformation d(mesh);
     select_vertices(d, c);
@@ -1177,7 +962,7 @@ void run_figure5(const Deformation_case& c, const Case_geometry& g, const Plan& 
     bool ok = false;
     const double first = seconds_of([&] { ok = d.preprocess(); });
     if(!ok || d.preprocess_report().basis_computed)
-      throw std::runtime_error("figure 5: preprocess() with the truncated basis failed");
+      throw std::runtime_error("figure 5: preprocess() with the saved basis failed");
     set_targets(d, c);
     for(const char* policy : {"soft", "exact"})
     {
@@ -1263,7 +1048,6 @@ void run_algorithms(const Deformation_case& c, const Options& options, Case_run&
                     const std::function<void()>& save)
 {
   const Case_geometry g = case_geometry(c);
-  const bool target = (run.id == options.target_case);
   auto merge = [&run, &save](const std::string& what, Bundle bundle) {
     for(Row_result& row : bundle.rows)
       run.results.rows.push_back(std::move(row));
@@ -1293,9 +1077,8 @@ void run_algorithms(const Deformation_case& c, const Options& options, Case_run&
   for(int m : run.frequencies)
   {
     std::cerr << "  spectral dual Laplacian, m = " << m << std::endl;
-    const bool anatomy = target && m == run.frequencies.front();
     merge("spectral dual Laplacian, m = " + std::to_string(m), run_in_child([&](Bundle& b) {
-            run_spectral(c, g, run.plan, m, anatomy, options.anatomy_repetitions, b);
+            run_spectral(c, g, run.plan, m, b);
           }));
   }
 }
@@ -1562,7 +1345,6 @@ std::vector<Target> evaluate_targets(const Case_run* run)
   const Row_result* spatial = row_of(run, "spatial");
   const Row_result* exact = row_of(run, "spectral_exact_100");
   const Row_result* soft = row_of(run, "spectral_soft_100");
-  const Row_result* anatomy = row_of(run, "anatomy");
 
   auto worst_ratio = [](const std::vector<double>& ratios) {
     double worst = std::numeric_limits<double>::infinity();
@@ -1570,9 +1352,6 @@ std::vector<Target> evaluate_targets(const Case_run* run)
       worst = std::isfinite(r) ? std::min(worst, r) : not_a_number;
     return worst;
   };
-  // Iteration anatomy numbers for the bounds.
-  // The memory-bandwidth bound of the two passes over H: two plain reads.
-  const double passes = 2 * median_of(anatomy, "read_H");
   const double iteration = median_of(exact, "iteration");
   const double transfer = median_of(exact, "transfer10");
 
@@ -1589,21 +1368,10 @@ std::vector<Target> evaluate_targets(const Case_run* run)
     t.met = t.known && worst >= 10;
     t.measured = "exact: " + ratio_text(r1) + " (original), " + ratio_text(r2) + " (SRE); soft: " +
                  ratio_text(r3) + ", " + ratio_text(r4);
-    // What the same work would cost with the two passes over H at the
-    // streaming bandwidth (two reads of H), or with H stored in float.
-    const double steps = median_of(anatomy, "step_dual") + median_of(anatomy, "step_sparse") +
-                         median_of(anatomy, "step_reduced_solve");
-    const double read = median_of(anatomy, "read_H");
-    const double floor_iteration = 2 * read + steps;
-    const double float_iteration =
-        median_of(anatomy, "panel_HY_float") + median_of(anatomy, "panel_HtX_float") + steps;
-    const double cgal = std::min(median_of(original, "deform10"), median_of(sre, "deform10"));
     t.bound = "10 iterations × " + time_text(iteration) + " + detail transfer " + time_text(transfer) +
               " (exact); CGAL's iteration is O(n) too (" + time_text(median_of(original, "iteration")) +
-              "). With the two passes at the streaming bandwidth (2 reads of H) an iteration would take " +
-              time_text(floor_iteration) + " (ratio ≈ " + ratio_text(cgal / (10 * floor_iteration + transfer)) +
-              "), with H stored in float " + time_text(float_iteration) + " (ratio ≈ " +
-              ratio_text(cgal / (10 * float_iteration + transfer)) + ")";
+              "); the iteration's own bound, two streaming passes over H, is measured by "
+              "benchmark_iteration_anatomy";
     targets.push_back(t);
   }
   {
@@ -1658,27 +1426,6 @@ std::vector<Target> evaluate_targets(const Case_run* run)
                  "detail-transfer factorization): " + ratio_text(r_exact);
     t.bound = "O(k m² + m³) with k = " + fixed(soft ? soft->value("constrained_vertices") : not_a_number, 0) +
               " constrained vertices";
-    targets.push_back(t);
-  }
-  {
-    Target t;
-    t.what = "one iteration (spectral, m = 100) vs two streaming passes over H (two reads of H at the measured bandwidth)";
-    t.required = "≤ 2×";
-    const double r = iteration / passes;
-    t.known = std::isfinite(r);
-    t.met = t.known && r <= 2.0;
-    t.measured = time_text(iteration) + " against " + time_text(passes) + ": " + ratio_text(r) +
-                 "; the two products over H alone (HᵀX + HY): " +
-                 time_text(median_of(anatomy, "panel_HtX") + median_of(anatomy, "panel_HY")) +
-                 " in double, " +
-                 time_text(median_of(anatomy, "panel_HtX_float") + median_of(anatomy, "panel_HY_float")) +
-                 " in float";
-    if(anatomy != nullptr)
-      t.bound = "shape HṼ " + time_text(median_of(anatomy, "step_shape")) + ", dual normals " +
-                time_text(median_of(anatomy, "step_dual")) + ", (L̂F)ᵀ product " +
-                time_text(median_of(anatomy, "step_sparse")) + ", Hᵀ product " +
-                time_text(median_of(anatomy, "step_project")) + ", reduced solve " +
-                time_text(median_of(anatomy, "step_reduced_solve"));
     targets.push_back(t);
   }
   return targets;
@@ -1921,8 +1668,8 @@ void write_report(std::ostream& out, const Options& options, const Run_info& inf
   {
     out << "![Time against m](../../doc/fig/deformation_time_vs_m.png)\n\n"
         << "Case `" << options.figure5_case << "` (the paper uses its Dinosaur, 28k vertices). The "
-           "basis of the largest m is computed once and truncated to its first m columns; the "
-           "eigensolve is timed separately for some m.\n\n"
+           "basis of every m is computed, saved and loaded into a new object (`save_basis()`, "
+           "`load_basis()`), whose phases are timed; the eigensolve is given for some m.\n\n"
         << "| m | eigensolve | per mesh, basis cached | per constraint set (soft) | of which factorization | "
            "per constraint set (exact) | per iteration | target change, `deform(10, 0)` (exact) | of which detail transfer | "
            "ARAP energy (exact, 10 it.) |\n|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
@@ -1956,53 +1703,10 @@ void write_report(std::ostream& out, const Options& options, const Run_info& inf
       << "Each phase against the number of vertices of the mesh, every case on its Loop-subdivided "
          "meshes (data in [deformation.tsv](deformation.tsv)).\n";
 
-  const Case_run* anatomy_run = target;
-  const Row_result* anatomy = row_of(anatomy_run, "anatomy");
-  if(anatomy != nullptr)
-  {
-    const double n = anatomy->value("n"), m = anatomy->value("m");
-    const double bytes = 8.0 * n * m;
-    out << "\n## One iteration taken apart (target case, m = " << m << ")\n\n"
-        << "The basis H is " << fixed(n, 0) << " × " << fixed(m, 0) << " doubles ("
-        << fixed(bytes / (1 << 20), 0) << " MiB). Steps of one iteration of the internal solver "
-        << "(`internal::Spectral_dual_laplacian_solver` on the basis of the class), each timed "
-        << "alone, " << anatomy->sample("step_shape").values.size() << " runs:\n\n"
-        << "| step | time |\n|---|--:|\n"
-        << "| one iteration of the class (`deform_report().solve_seconds` difference) | "
-        << format_times(row_of(anatomy_run, "spectral_exact_100")->sample("iteration")) << " |\n"
-        << "| one iteration of the internal solver (`solve()`, 10 − 1 solves) | "
-        << format_times(anatomy->sample("solver_iteration")) << " |\n"
-        << "| shape S = HṼ (n×m by m×3, `Stored_basis::multiply`) | "
-        << format_times(anatomy->sample("step_shape")) << " |\n"
-        << "| dual normals of S (`Dual_mesh_operator::update_normals`, " << fixed(anatomy->value("dual_rows"), 0)
-        << " rows) | " << format_times(anatomy->sample("step_dual")) << " |\n"
-        << "| (L̂F)ᵀ(−h n̂) (`Dual_mesh_operator::apply_transpose`: faces, then vertices) | "
-        << format_times(anatomy->sample("step_sparse")) << " |\n"
-        << "| Hᵀ (…) (m×n by n×3, `Stored_basis::multiply_transpose`) | "
-        << format_times(anatomy->sample("step_project")) << " |\n"
-        << "| reduced solve (m×m Cholesky, 3 right-hand sides) | "
-        << format_times(anatomy->sample("step_reduced_solve")) << " |\n"
-        << "| HᵀX + HY, X n×3, Y m×3, H in panels (double) | "
-        << time_text(median_of(anatomy, "panel_HtX") + median_of(anatomy, "panel_HY")) << " (HᵀX "
-        << format_times(anatomy->sample("panel_HtX")) << ", HY " << format_times(anatomy->sample("panel_HY"))
-        << ") |\n"
-        << "| the same, H in panels of floats | "
-        << time_text(median_of(anatomy, "panel_HtX_float") + median_of(anatomy, "panel_HY_float")) << " (HᵀX "
-        << format_times(anatomy->sample("panel_HtX_float")) << ", HY "
-        << format_times(anatomy->sample("panel_HY_float")) << ") |\n"
-        << "| the same with Eigen's general products on the n×m matrix (double) | "
-        << time_text(median_of(anatomy, "pass_HtX") + median_of(anatomy, "pass_HY")) << " (HᵀX "
-        << format_times(anatomy->sample("pass_HtX")) << ", HY " << format_times(anatomy->sample("pass_HY"))
-        << ") |\n"
-        << "| **bound: two reads of H** | " << time_text(2 * median_of(anatomy, "read_H")) << " |\n"
-        << "| one read of H (sum of its entries) | " << format_times(anatomy->sample("read_H"))
-        << " (" << fixed(bytes / median_of(anatomy, "read_H") / 1e9, 1) << " GB/s) |\n"
-        << "| detail transfer (exact): HṼ | " << format_times(anatomy->sample("transfer_shape")) << " |\n"
-        << "| detail transfer: Poisson right-hand side (per face) | "
-        << format_times(anatomy->sample("transfer_rhs")) << " |\n"
-        << "| detail transfer: right-hand side + Dirichlet back-substitution | "
-        << format_times(anatomy->sample("transfer_exact")) << " |\n";
-  }
+  out << "\n## One iteration taken apart\n\n"
+      << "The steps of one iteration (the passes over the basis H, the dual normals, the sparse "
+         "products, the reduced solve, the detail transfer) against the streaming bound, two reads "
+         "of H: `benchmark_iteration_anatomy`, the micro-benchmark of the solver's kernels.\n";
 
   out << "\n## Cases\n\n"
       << "Per case: timings, ratios of the peers' times to this package's, and the quality of the "
@@ -2067,12 +1771,6 @@ void write_data(std::ostream& out, const std::vector<Case_run>& runs, const Bund
     const double region = spatial ? spatial->value("region_vertices") : not_a_number;
     for(const Row_result& row : run.results.rows)
     {
-      if(row.key == "anatomy")
-      {
-        for(const auto& s : row.samples)
-          sample_line(run.name, run.level, run.vertices, region, row.key, s.first, s.second);
-        continue;
-      }
       for(const char* phase : {"constraint", "factorization", "deform10", "transfer10", "iteration",
                                "converge", "eigensolve"})
         sample_line(run.name, run.level, run.vertices, region, row.key, phase, row.sample(phase));
