@@ -127,6 +127,7 @@ template <class TM,
           class VPM = Default>
 class Spectral_surface_mesh_deformation
   : public Spectral_deformation::Roi_and_control_vertices<
+        Spectral_surface_mesh_deformation<TM, VIM, HIM, TAG, ET, ST, Reserved, VPM>,
         TM,
         typename Spectral_deformation::internal::Deformation::Deformation_class_types<TM, VIM, HIM, TAG, ET, ST,
                                                                                      VPM>::Eigensolver_traits,
@@ -137,11 +138,16 @@ class Spectral_surface_mesh_deformation
 {
   typedef Spectral_deformation::internal::Deformation::Deformation_class_types<TM, VIM, HIM, TAG, ET, ST, VPM> Types;
   typedef typename Types::Computation Computation;
-  typedef Spectral_deformation::Roi_and_control_vertices<TM, typename Types::Eigensolver_traits, Computation,
-                                                         typename Types::Selection>
+  typedef typename Types::Selection Selection;
+  typedef Spectral_deformation::Roi_and_control_vertices<Spectral_surface_mesh_deformation,
+                                                         TM, typename Types::Eigensolver_traits, Computation,
+                                                         Selection>
       Base;
-  using Base::m_computation;
-  using Base::m_selection;
+  // The bases hold no data: they reach the selection and the computation,
+  // the one home of the settings, through this class.
+  friend Base;
+  friend Spectral_deformation::Spectral_parameters<Spectral_surface_mesh_deformation, TM,
+                                                   typename Types::Eigensolver_traits, Computation>;
   static constexpr bool is_spectral = Computation::is_spectral;
 
 public:
@@ -208,7 +214,7 @@ public:
                                     Vertex_index_map vertex_index_map,
                                     Hedge_index_map hedge_index_map,
                                     Vertex_point_map vertex_point_map)
-    : Base(triangle_mesh, vertex_index_map, vertex_point_map), m_him(hedge_index_map)
+    : m_selection(triangle_mesh, vertex_index_map, vertex_point_map), m_him(hedge_index_map)
   {}
 
   /// Creates a deformation object for `triangle_mesh` with an initialized
@@ -448,6 +454,12 @@ public:
 private:
   static Point to_point(const Eigen::RowVector3d& x) { return Point(x[0], x[1], x[2]); }
 
+  /// What the user selected on the mesh: the ROI, the control vertices,
+  /// their targets and the initial positions.
+  Selection m_selection;
+  /// The computation on the region, owner of the settings (one object,
+  /// handed down by const reference to the pipeline and the solvers).
+  Computation m_computation;
   Hedge_index_map m_him;
   unsigned int m_iterations = 10;
   double m_tolerance = 1e-4;

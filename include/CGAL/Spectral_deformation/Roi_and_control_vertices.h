@@ -19,16 +19,19 @@ namespace Spectral_deformation {
 /// semantics of CGAL's `Surface_mesh_deformation`: a public base of
 /// `Spectral_surface_mesh_deformation`, whose functions they are. Its own
 /// public base `Spectral_parameters` holds the parameters of the spectral
-/// algorithms.
+/// algorithms. It holds no data: the selection and the computation are the
+/// deformation class's, reached through it (the curiously recurring template
+/// pattern).
 ///
+/// \tparam Deformation the deformation class, `Spectral_surface_mesh_deformation`
 /// \tparam TM the mesh type of the deformation
 /// \tparam EigensolverTraits the eigensolver traits of the deformation
 /// \tparam Computation the computation on the region behind the deformation
 ///         class (not documented: an implementation detail)
 /// \tparam Selection the vertices selected on the mesh, their targets and
 ///         initial positions (not documented: an implementation detail)
-template <class TM, class EigensolverTraits, class Computation, class Selection>
-class Roi_and_control_vertices : public Spectral_parameters<TM, EigensolverTraits, Computation>
+template <class Deformation, class TM, class EigensolverTraits, class Computation, class Selection>
+class Roi_and_control_vertices : public Spectral_parameters<Deformation, TM, EigensolverTraits, Computation>
 {
   typedef typename Selection::vertex_descriptor vertex_descriptor;
   typedef typename Selection::Point Point;
@@ -40,15 +43,15 @@ public:
   /// Erases all the vertices from the region of interest (control vertices included).
   void clear_roi_vertices()
   {
-    m_selection.clear_roi();
-    this->m_computation.roi_changed();
+    selection().clear_roi();
+    computation().roi_changed();
   }
 
   /// Erases all the vertices from the set of control vertices.
   void clear_control_vertices()
   {
-    m_selection.clear_controls();
-    this->m_computation.constraints_changed();
+    selection().clear_controls();
+    computation().constraints_changed();
   }
 
   /// Inserts `vd` in the set of control vertices, and in the ROI if needed
@@ -58,11 +61,11 @@ public:
   ///         a vertex of the mesh (null, removed, or an index out of range).
   bool insert_control_vertex(vertex_descriptor vd)
   {
-    if(m_selection.is_control(vd))
+    if(selection().is_control(vd))
       return false;
     insert_roi_vertex(vd);
-    m_selection.insert_control(vd);
-    this->m_computation.constraints_changed();
+    selection().insert_control(vd);
+    computation().constraints_changed();
     return true;
   }
 
@@ -79,9 +82,9 @@ public:
   /// Returns `true` if `vd` was a control vertex.
   bool erase_control_vertex(vertex_descriptor vd)
   {
-    if(!m_selection.erase_control(vd))
+    if(!selection().erase_control(vd))
       return false;
-    this->m_computation.constraints_changed();
+    computation().constraints_changed();
     return true;
   }
 
@@ -100,9 +103,9 @@ public:
   ///         a vertex of the mesh (null, removed, or an index out of range).
   bool insert_roi_vertex(vertex_descriptor vd)
   {
-    if(!m_selection.insert_roi(vd))
+    if(!selection().insert_roi(vd))
       return false;
-    this->m_computation.roi_changed();
+    computation().roi_changed();
     return true;
   }
 
@@ -111,9 +114,9 @@ public:
   /// position. Returns `true` if `vd` was in the ROI.
   bool erase_roi_vertex(vertex_descriptor vd)
   {
-    if(!m_selection.erase_roi(vd))
+    if(!selection().erase_roi(vd))
       return false;
-    this->m_computation.roi_changed();
+    computation().roi_changed();
     return true;
   }
 
@@ -129,7 +132,7 @@ public:
   /// mesh (degenerate faces, non-manifold edges, ...), or a numerical step
   /// fails. The mesh is never modified by `preprocess()`, except that
   /// vertices erased from the ROI return to their initial positions.
-  bool preprocess() { return this->m_computation.preprocess(m_selection); }
+  bool preprocess() { return computation().preprocess(selection()); }
 
   /// @}
 
@@ -142,8 +145,8 @@ public:
   ///         `target_position` is not finite (the target is then unchanged).
   void set_target_position(vertex_descriptor vd, const Point& target_position)
   {
-    if(m_selection.is_control(vd))
-      m_selection.set_target(vd, target_position);
+    if(selection().is_control(vd))
+      selection().set_target(vd, target_position);
   }
 
   /// Translates the target of the control vertex `vd` by `t`; does nothing
@@ -154,9 +157,9 @@ public:
   template <class Vect>
   void translate(vertex_descriptor vd, const Vect& t)
   {
-    if(!m_selection.is_control(vd))
+    if(!selection().is_control(vd))
       return;
-    const Point& p = m_selection.target(vd);
+    const Point& p = selection().target(vd);
     set_target_position(vd, Point(p[0] + t[0], p[1] + t[1], p[2] + t[2]));
   }
 
@@ -179,9 +182,9 @@ public:
   template <typename Quaternion, typename Vect>
   void rotate(vertex_descriptor vd, const Vect& to_rotation_center, const Quaternion& quat)
   {
-    if(!m_selection.is_control(vd))
+    if(!selection().is_control(vd))
       return;
-    const Point& p = m_selection.target(vd);
+    const Point& p = selection().target(vd);
     const Vect relative(p[0] - to_rotation_center[0], p[1] - to_rotation_center[1],
                         p[2] - to_rotation_center[2]);
     const Vect v = quat * relative;
@@ -203,26 +206,22 @@ public:
   /// \pre `vd` is a control vertex (as in CGAL).
   const Point& target_position(vertex_descriptor vd)
   {
-    CGAL_precondition(m_selection.is_control(vd));
-    return m_selection.target(vd);
+    CGAL_precondition(selection().is_control(vd));
+    return selection().target(vd);
   }
 
   /// @}
 
 protected:
-  /// Reads the initial positions of `triangle_mesh` (see the constructors of
-  /// `Spectral_surface_mesh_deformation`).
-  template <class VertexIndexMap, class VertexPointMap>
-  Roi_and_control_vertices(TM& triangle_mesh, const VertexIndexMap& vertex_index_map,
-                           const VertexPointMap& vertex_point_map)
-    : m_selection(triangle_mesh, vertex_index_map, vertex_point_map)
-  {}
+  Roi_and_control_vertices() = default;
   ~Roi_and_control_vertices() = default;
   Roi_and_control_vertices(const Roi_and_control_vertices&) = delete;
   Roi_and_control_vertices& operator=(const Roi_and_control_vertices&) = delete;
 
-  /// What the user selected on the mesh, which the deformation class reads.
-  Selection m_selection;
+private:
+  Computation& computation() { return static_cast<Deformation&>(*this).m_computation; }
+  Selection& selection() { return static_cast<Deformation&>(*this).m_selection; }
+  const Selection& selection() const { return static_cast<const Deformation&>(*this).m_selection; }
 };
 
 } // namespace Spectral_deformation

@@ -25,11 +25,16 @@ namespace Spectral_deformation {
 /// With `SPATIAL_DUAL_LAPLACIAN`, which has no basis, they do not compile;
 /// the getters return the defaults.
 ///
+/// The settings have one home, the computation that the deformation class
+/// owns (privately); this base reaches it through the deformation class
+/// (the curiously recurring template pattern), and holds no data.
+///
+/// \tparam Deformation the deformation class, `Spectral_surface_mesh_deformation`
 /// \tparam TM the mesh type of the deformation
 /// \tparam EigensolverTraits the eigensolver traits of the deformation
 /// \tparam Computation the computation on the region behind the deformation
 ///         class (not documented: an implementation detail)
-template <class TM, class EigensolverTraits, class Computation>
+template <class Deformation, class TM, class EigensolverTraits, class Computation>
 class Spectral_parameters
 {
   static constexpr bool is_spectral = Computation::is_spectral;
@@ -40,7 +45,7 @@ public:
   /// @{
 
   /// The number of frequencies `m` of the basis (default 100).
-  std::size_t number_of_frequencies() const { return m_computation.settings().frequencies; }
+  std::size_t number_of_frequencies() const { return computation().settings().frequencies; }
   /// Sets the number of frequencies; a region with fewer vertices uses all of
   /// them. A different value makes the next `preprocess()` rebuild the
   /// region, basis included.
@@ -50,15 +55,15 @@ public:
     static_assert(is_spectral, "set_number_of_frequencies(): SPATIAL_DUAL_LAPLACIAN has no basis");
     if(m == 0)
       throw Error(Error::INVALID_ARGUMENT, "the number of frequencies must be positive");
-    if(m != m_computation.settings().frequencies)
+    if(m != computation().settings().frequencies)
     {
-      m_computation.settings().frequencies = m;
-      m_computation.drop_region();
+      computation().settings().frequencies = m;
+      computation().drop_region();
     }
   }
 
   /// The weight `w` of the constraints in the reduced least squares system (default 1).
-  double constraint_weight() const { return m_computation.settings().weight; }
+  double constraint_weight() const { return computation().settings().weight; }
   /// Sets the constraint weight, a change of the constraint set. Larger
   /// weights meet the constraints of the smooth mesh more closely but the
   /// truncated basis cannot form sharp transitions, which degrades the
@@ -69,21 +74,21 @@ public:
     static_assert(is_spectral, "set_constraint_weight(): SPATIAL_DUAL_LAPLACIAN has no constraint weight");
     if(!(w > 0 && std::isfinite(w)))
       throw Error(Error::INVALID_ARGUMENT, "the constraint weight must be positive and finite");
-    m_computation.settings().weight = w;
-    m_computation.constraints_changed();
+    computation().settings().weight = w;
+    computation().constraints_changed();
   }
 
   /// The constraint policy (default `EXACT_CONSTRAINTS`).
-  Spectral_constraint_policy constraint_policy() const { return m_computation.settings().policy; }
+  Spectral_constraint_policy constraint_policy() const { return computation().settings().policy; }
   /// Sets the constraint policy; a different policy is a change of the
   /// constraint set.
   void set_constraint_policy(Spectral_constraint_policy policy)
   {
     static_assert(is_spectral, "set_constraint_policy(): SPATIAL_DUAL_LAPLACIAN always meets the constraints exactly");
-    if(policy != m_computation.settings().policy)
+    if(policy != computation().settings().policy)
     {
-      m_computation.settings().policy = policy;
-      m_computation.constraints_changed();
+      computation().settings().policy = policy;
+      computation().constraints_changed();
     }
   }
 
@@ -92,14 +97,14 @@ public:
   void set_eigensolver_traits(const EigensolverTraits& traits)
   {
     static_assert(is_spectral, "set_eigensolver_traits(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.eigensolver() = traits;
+    computation().eigensolver() = traits;
   }
 
   /// The number of vertices from which a region keeps its basis in single
   /// precision (default 200,000).
   std::size_t single_precision_basis_threshold() const
   {
-    return m_computation.settings().single_precision_basis_threshold;
+    return computation().settings().single_precision_basis_threshold;
   }
   /// Regions of at least `vertices` vertices keep their basis in float: 4 n m
   /// bytes instead of 8 n m (0.6 GiB instead of 1.2 GiB for 1.6 million
@@ -114,12 +119,12 @@ public:
   void set_single_precision_basis_threshold(std::size_t vertices)
   {
     static_assert(is_spectral, "set_single_precision_basis_threshold(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.settings().single_precision_basis_threshold = vertices;
+    computation().settings().single_precision_basis_threshold = vertices;
   }
 
   /// The number of rotation patches of the iteration (default 1000; 0: one
   /// rotation per dual vertex, the full iteration of the paper).
-  std::size_t rotation_patches() const { return m_computation.settings().rotation_patches; }
+  std::size_t rotation_patches() const { return computation().settings().rotation_patches; }
   /// Groups the dual vertices of the region into about `count` patches of
   /// neighbouring faces that turn by one rotation each in the iterations of
   /// `deform()`. Each iteration then costs O(m × count) instead of two
@@ -133,13 +138,13 @@ public:
   void set_rotation_patches(std::size_t count)
   {
     static_assert(is_spectral, "set_rotation_patches(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.set_rotation_patches(count);
+    computation().set_rotation_patches(count);
   }
 
   /// The energy the iteration of `deform()` minimizes in the space of the
   /// basis (default `DUAL_LAPLACIAN_AND_ARAP_ENERGY`; `DUAL_LAPLACIAN_ENERGY`
   /// is the paper's).
-  Spectral_smooth_energy smooth_energy() const { return m_computation.settings().smooth_energy; }
+  Spectral_smooth_energy smooth_energy() const { return computation().settings().smooth_energy; }
   /// Sets the energy the iteration minimizes. `ARAP_ENERGY` and
   /// `DUAL_LAPLACIAN_AND_ARAP_ENERGY` keep twisted tubes round where dual
   /// Laplacian editing pinches them, and with stages (`set_stage_angle()`)
@@ -156,13 +161,13 @@ public:
     static_assert(is_spectral, "set_smooth_energy(): SPATIAL_DUAL_LAPLACIAN has no basis");
     if(energy != DUAL_LAPLACIAN_ENERGY && energy != ARAP_ENERGY && energy != DUAL_LAPLACIAN_AND_ARAP_ENERGY)
       throw Error(Error::INVALID_ARGUMENT, "unknown smooth energy");
-    m_computation.set_smooth_energy(energy);
+    computation().set_smooth_energy(energy);
   }
 
   /// The largest angle, in degrees, by which one stage of `deform()` turns a
   /// group of control vertices (default 30; 0: the targets are reached in
   /// one stage, the paper's iteration).
-  double stage_angle() const { return m_computation.settings().stage_angle * 180 / 3.14159265358979323846; }
+  double stage_angle() const { return computation().settings().stage_angle * 180 / 3.14159265358979323846; }
   /// Sets stage_angle(). When the targets turn a connected group of control
   /// vertices by more than this angle from where the smooth mesh holds it,
   /// `deform()` moves them there in stages along the group's rigid path
@@ -184,12 +189,12 @@ public:
     static_assert(is_spectral, "set_stage_angle(): SPATIAL_DUAL_LAPLACIAN has no basis");
     if(!(degrees >= 0) || !std::isfinite(degrees))
       throw Error(Error::INVALID_ARGUMENT, "the stage angle must be a finite angle of at least 0 degrees");
-    m_computation.set_stage_angle(degrees * 3.14159265358979323846 / 180);
+    computation().set_stage_angle(degrees * 3.14159265358979323846 / 180);
   }
 
   /// Whether the detail transfer keeps the volume the surface encloses
   /// (default `false`).
-  bool volume_preservation() const { return m_computation.settings().preserve_volume; }
+  bool volume_preservation() const { return computation().settings().preserve_volume; }
   /// Makes the detail transfer of `deform()` keep the volume enclosed by
   /// the surface: the least-squares positions of the detail transfer are
   /// corrected along the direction that changes the volume at the least
@@ -206,7 +211,7 @@ public:
   void set_volume_preservation(bool preserve)
   {
     static_assert(is_spectral, "set_volume_preservation(): SPATIAL_DUAL_LAPLACIAN has no detail transfer");
-    m_computation.set_volume_preservation(preserve);
+    computation().set_volume_preservation(preserve);
   }
 
   /// @}
@@ -225,7 +230,7 @@ public:
   void set_basis(const Manifold_harmonics_basis<TM, BasisEigensolverTraits>& basis)
   {
     static_assert(is_spectral, "set_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.supply_basis(basis.data());
+    computation().supply_basis(basis.data());
   }
 
   /// Writes the basis of the current region in the format of
@@ -235,7 +240,7 @@ public:
   void save_basis(std::ostream& os) const
   {
     static_assert(is_spectral, "save_basis(): SPATIAL_DUAL_LAPLACIAN has no basis");
-    m_computation.save_basis(os);
+    computation().save_basis(os);
   }
 
   /// @}
@@ -246,8 +251,9 @@ protected:
   Spectral_parameters(const Spectral_parameters&) = delete;
   Spectral_parameters& operator=(const Spectral_parameters&) = delete;
 
-  /// The computation on the region, which the deformation class drives.
-  Computation m_computation;
+private:
+  Computation& computation() { return static_cast<Deformation&>(*this).m_computation; }
+  const Computation& computation() const { return static_cast<const Deformation&>(*this).m_computation; }
 };
 
 } // namespace Spectral_deformation
