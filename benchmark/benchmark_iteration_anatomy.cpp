@@ -60,15 +60,6 @@ namespace {
 
 namespace SD = CGAL::Spectral_deformation::internal;
 
-double median(std::vector<double> values)
-{
-  if(values.empty())
-    return not_a_number;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 template <class Function>
 double seconds_of(Function&& function)
 {

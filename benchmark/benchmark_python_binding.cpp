@@ -33,12 +33,6 @@ void write_raw(const std::string& file, const std::vector<T>& values)
     throw std::runtime_error("cannot write " + file);
 }
 
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
 struct Arrays
 {
   std::vector<double> V;

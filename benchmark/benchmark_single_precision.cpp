@@ -40,17 +40,6 @@
 
 using namespace ssmd_benchmark;
 
-namespace {
-
-double median(std::vector<double> values)
-{
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-} // namespace
-
 int main(int argc, char** argv)
 {
   std::string name = "armadillo_arm";

@@ -15,14 +15,28 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace ssmd_benchmark {
+
+/// The median of `values` (the mean of the two middle ones for an even
+/// count), NaN when there is none.
+inline double median(std::vector<double> values)
+{
+  if(values.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
 
 /// The value in KiB of the line `key:   1234 kB` of a /proc file, -1 if absent.
 inline long proc_field_kib(const std::string& file, const std::string& key)
