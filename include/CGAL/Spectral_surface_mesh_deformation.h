@@ -143,11 +143,13 @@ class Spectral_surface_mesh_deformation
                                                          TM, typename Types::Eigensolver_traits, Computation,
                                                          Selection>
       Base;
+  typedef Spectral_deformation::Spectral_parameters<Spectral_surface_mesh_deformation, TM,
+                                                    typename Types::Eigensolver_traits, Computation>
+      Parameters_base;
   // The bases hold no data: they reach the selection and the computation,
   // the one home of the settings, through this class.
   friend Base;
-  friend Spectral_deformation::Spectral_parameters<Spectral_surface_mesh_deformation, TM,
-                                                   typename Types::Eigensolver_traits, Computation>;
+  friend Parameters_base;
   static constexpr bool is_spectral = Computation::is_spectral;
 
 public:
