@@ -5,14 +5,17 @@
 # harness that sits beside the repository (../shared/bench, see its README):
 # installs the package from build/ (or $SSMD_BUILD_DIR) into a prefix, makes
 # the cases of benchmark/harness_cases/ (the mesh's own resolution, and the
-# subdivided armadillo and dino with SUBDIVIDE=1), and runs compare.sh on
-# each, ROUNDS rounds (default 3). The harness builds its programs against
-# the installed package with the library's defaults.
+# armadillo and dino Loop-subdivided at the levels listed in SUBDIVIDE, e.g.
+# SUBDIVIDE="1 2"), and runs compare.sh on each, ROUNDS rounds (default 3).
+# The harness builds its programs against the installed package with the
+# library's defaults.
 #
 #   bash benchmark/run_harness_comparison.sh [ROUNDS] [CASE ...]
 #
-# Output: one log per case in $OUT (default build/harness), and the lines of
-# compare.sh with the ratios on standard output.
+# Output: one log per case in $OUT (default build/harness; the subdivided
+# cases as CASE_LEVEL.log), and the lines of compare.sh with the ratios on
+# standard output. benchmark/plot_harness.py makes the table and the figure
+# from the logs.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${SSMD_BUILD_DIR:-$root/build}"
@@ -42,18 +45,15 @@ for name in "${cases[@]}"; do
   echo "== $name ($mesh)"
   bash "$bench/compare.sh" "$out/prefix" "$mesh" "$prefix.sel" "$prefix.def" "$rounds" | tee "$out/$name.log" |
     grep -E "^round [0-9]+, "
-  if [ "${SUBDIVIDE:-0}" = 1 ] && [ "$name" != cactus_top ] && [ "$name" != bunny_ears ]; then
-    fine="$out/cases/${name}_1.off"
-    [ -f "$fine" ] || "$BENCH_BUILD/arap/subdivide" "$mesh" "$fine" 1 >/dev/null
-    python3 - "$spec" "$fine" "$out/cases/${name}_1.json" <<'PY'
-import json, sys
-spec = json.load(open(sys.argv[1]))
-spec["mesh"] = sys.argv[2]
-json.dump(spec, open(sys.argv[3], "w"))
-PY
-    /usr/bin/python3 "$bench/make_case.py" "$out/cases/${name}_1.json" --out-prefix "$prefix"_1 >/dev/null
-    echo "== ${name}, subdivided once"
-    bash "$bench/compare.sh" "$out/prefix" "$fine" "$prefix"_1.sel "$prefix"_1.def "$rounds" |
-      tee "$out/${name}_1.log" | grep -E "^round [0-9]+, "
+  if [ "$name" = cactus_top ] || [ "$name" = bunny_ears ]; then
+    continue
   fi
+  for level in ${SUBDIVIDE:-}; do
+    fine="$out/cases/${name}_$level.off"
+    [ -f "$fine" ] || "$BENCH_BUILD/arap/subdivide" "$mesh" "$fine" "$level" >/dev/null
+    /usr/bin/python3 "$bench/make_case.py" "$spec" --mesh "$fine" --out-prefix "${prefix}_$level" >/dev/null
+    echo "== ${name}, subdivided $level times"
+    bash "$bench/compare.sh" "$out/prefix" "$fine" "${prefix}_$level.sel" "${prefix}_$level.def" "$rounds" |
+      tee "$out/${name}_$level.log" | grep -E "^round [0-9]+, "
+  done
 done
