@@ -128,6 +128,7 @@ struct Options
   double refine_tolerance = -1;             // >= 0: a run of refine() after deform() (spectral, iterated)
   unsigned int refine_iterations = 1000;    // its cap
   unsigned int arap_large_iterations = 200; // of the additional CGAL runs on large ROIs
+  double arap_tolerance = 1e-4;             // of the additional CGAL runs (the class's default)
   std::size_t large_roi = 20000;
   std::vector<std::string> notes;
   bool selection_only = false; // write the selections and stop
@@ -167,6 +168,9 @@ void print_usage(const char* program)
       << "                                deform() to the ARAP optimum (tolerance T)\n"
       << "  --refine-iterations N         the cap of --refine (default 1000)\n"
       << "  --large-roi N                 ROIs with more vertices are large (default 20000)\n"
+      << "  --arap-tolerance T            energy tolerance of the additional CGAL runs\n"
+      << "                                (default 1e-4, the class's; e.g. 1e-9 with a large\n"
+      << "                                --long-iterations: ARAP run to convergence)\n"
       << "  --arap-large-iterations N     cap of the additional CGAL runs on large ROIs\n"
       << "                                (default 200)\n"
       << "  --mesh-output DIR             write the input, the selection (.vtk, scalar\n"
@@ -276,6 +280,12 @@ Options parse_options(int argc, char** argv)
       options.refine_iterations = to_positive_int(value(), argument);
     else if(argument == "--large-roi")
       options.large_roi = to_positive_int(value(), argument);
+    else if(argument == "--arap-tolerance")
+    {
+      options.arap_tolerance = std::stod(value());
+      if(!(options.arap_tolerance >= 0))
+        throw std::invalid_argument("--arap-tolerance must be a number >= 0");
+    }
     else if(argument == "--arap-large-iterations")
       options.arap_large_iterations = to_positive_int(value(), argument);
     else if(argument == "--mesh-output")
@@ -384,18 +394,18 @@ struct Cgal_iterations
   double tolerance = 0;
 };
 
-/// CGAL's `deform(iterations, tolerance)` on a new object with the tolerance
-/// of the class; `iterations == 0` means `deform()` with the defaults of the
-/// class.
+/// CGAL's `deform(iterations, tolerance)` on a new object;
+/// `iterations == 0` means `deform()` with the defaults of the class.
 template <CGAL::Deformation_algorithm_tag TAG>
-Cgal_iterations run_cgal(const Deformation_case& c, unsigned int iterations, Run_result& result)
+Cgal_iterations run_cgal(const Deformation_case& c, unsigned int iterations, double tolerance,
+                         Run_result& result)
 {
   Mesh mesh = c.mesh;
   Cgal_deformation<TAG> deformation(mesh);
   select_vertices(deformation, c);
   Cgal_iterations run;
   run.cap = iterations == 0 ? deformation.iterations() : iterations;
-  run.tolerance = deformation.tolerance();
+  run.tolerance = iterations == 0 ? deformation.tolerance() : tolerance;
   const Clock::time_point start = Clock::now();
   const bool preprocessed = deformation.preprocess();
   result.preprocess_seconds = seconds_since(start);
@@ -570,24 +580,24 @@ void run_package_algorithm(const Deformation_case& c, const Options& options,
 }
 
 /// Runs CGAL's `deform()` with the defaults of the class and, when it stops
-/// at its iteration cap, `deform(long_iterations, tolerance)` on a new object.
+/// at its iteration cap, `deform(long_iterations, long_tolerance)` on a new object.
 template <CGAL::Deformation_algorithm_tag TAG>
-void run_cgal_algorithm(const Deformation_case& c, unsigned int long_iterations,
+void run_cgal_algorithm(const Deformation_case& c, unsigned int long_iterations, double long_tolerance,
                         const std::string& label, const std::string& key,
                         std::vector<Run_result>& results)
 {
   Run_result first;
   first.label = label + ", `deform()`";
   first.key = key;
-  const Cgal_iterations run = run_cgal<TAG>(c, 0, first);
+  const Cgal_iterations run = run_cgal<TAG>(c, 0, 0.0, first);
   results.push_back(first);
   if(!first.success || (run.performed != 0 && run.performed < run.cap) || long_iterations <= run.cap)
     return;
   Run_result second;
   second.label = label + ", `deform(" + std::to_string(long_iterations) + ", " +
-                 scientific(run.tolerance) + ")`";
+                 scientific(long_tolerance) + ")`";
   second.key = key + "_long";
-  run_cgal<TAG>(c, long_iterations, second);
+  run_cgal<TAG>(c, long_iterations, long_tolerance, second);
   results.push_back(second);
 }
 
@@ -711,8 +721,8 @@ void write_definitions(std::ostream& out, const Options& options)
       << "- CGAL ARAP: `CGAL::Surface_mesh_deformation<Surface_mesh>` with its default "
          "weights and sparse solver (Eigen `SparseLU`), tags `SPOKES_AND_RIMS` (default) and "
          "`ORIGINAL_ARAP`. `deform()` runs at most 5 iterations with the energy tolerance "
-         "1e-4; when it stops at the cap, a new object runs `deform(N, 1e-4)` with N = "
-         << options.long_iterations << ", capped at N = " << options.arap_large_iterations
+         "1e-4; when it stops at the cap, a new object runs `deform(N, "
+      << scientific(options.arap_tolerance) << ")` with N = " << options.long_iterations << ", capped at N = " << options.arap_large_iterations
          << " when the ROI has more than " << options.large_roi
          << " vertices (to bound the run time; see each case).\n"
       << "- This package: `CGAL::Spectral_surface_mesh_deformation<Surface_mesh, Default, "
@@ -839,8 +849,8 @@ void write_report(const std::string& filename, const Options& options, const Run
       << fixed(options.stage_angle, 0) << "°"
       << (options.volume_preservation ? ", volume preservation" : "")
       << ", additional runs `deform("
-      << options.long_iterations << ", 1e-4)` (CGAL on ROIs above " << options.large_roi
-      << " vertices: " << options.arap_large_iterations
+      << options.long_iterations << ", 1e-4)` (CGAL: tolerance " << scientific(options.arap_tolerance)
+      << ", on ROIs above " << options.large_roi << " vertices at most " << options.arap_large_iterations
       << "); definitions of the columns at the end\n";
   for(const std::string& note : options.notes)
     out << "- Note: " << note << "\n";
@@ -965,13 +975,15 @@ void run_case(const Deformation_case& c, const Options& options, unsigned int le
   const std::string m = "m = " + std::to_string(options.frequencies);
   Clock::time_point step = Clock::now();
   run_cgal_algorithm<CGAL::SPOKES_AND_RIMS>(c, sweep_only ? 0 : report.cgal_long_iterations,
+                                            options.arap_tolerance,
                                             "CGAL ARAP, spokes and rims", "cgal_spokes_and_rims",
                                             results);
   progress(step);
   if(!sweep_only)
   {
     step = Clock::now();
-    run_cgal_algorithm<CGAL::ORIGINAL_ARAP>(c, report.cgal_long_iterations, "CGAL ARAP, original",
+    run_cgal_algorithm<CGAL::ORIGINAL_ARAP>(c, report.cgal_long_iterations, options.arap_tolerance,
+                                            "CGAL ARAP, original",
                                             "cgal_original", results);
     progress(step);
   }
