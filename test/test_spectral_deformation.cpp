@@ -417,11 +417,14 @@ TEST_CASE("process-wide tuning is an opt-in of every algorithm and does not chan
 }
 
 // With two threads, the exact policy's first factorization runs beside the
-// basis; on one thread, after it: the same systems, so the same result.
+// basis; on one thread, after it: the same systems, so the same result. The
+// bar has more vertices than serial_preparation_vertices, below which the
+// region is prepared on one thread whatever the setting.
 TEST_CASE("the factorization made during the basis gives the result of the one made after it", "[deformation]")
 {
 #ifdef _OPENMP
-  const Soup soup = bar(16, 2);
+  const Soup soup = bar(160, 8);
+  REQUIRE(soup.points.size() >= CGAL::Spectral_deformation::internal::serial_preparation_vertices);
   const internal::Deformation::Rigid_motion still;
   const internal::Deformation::Rigid_motion bend =
       motion(pi / 4, Eigen::Vector3d::UnitX(), Eigen::Vector3d(0, 0, 5.0));
@@ -435,6 +438,31 @@ TEST_CASE("the factorization made during the basis gives the result of the one m
   CHECK((overlapped.after - sequential.after).rowwise().norm().maxCoeff() / diagonal_of(overlapped.before) < 1e-9);
 #else
   SUCCEED("without OpenMP the package runs on one thread: nothing overlaps");
+#endif
+}
+
+// Small regions run on the calling thread alone while a call lasts; the
+// caller's OpenMP setting is the same afterwards, whether the call
+// succeeded or failed.
+TEST_CASE("a small region leaves the caller's OpenMP thread count as it was", "[deformation]")
+{
+#ifdef _OPENMP
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(2);
+  const Soup soup = bar(16, 2);
+  REQUIRE(soup.points.size() < CGAL::Spectral_deformation::internal::serial_deformation_vertices);
+  const internal::Deformation::Rigid_motion still;
+  const Run run = deform_bar<Spectral>(soup, still, motion(pi / 4, Eigen::Vector3d::UnitX(),
+                                                           Eigen::Vector3d(0, 0, 5.0)), 5, 0.0, 40);
+  CHECK((run.after - run.before).cwiseAbs().maxCoeff() > 0.1);
+  CHECK(omp_get_max_threads() == 2);
+  Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  Spectral failing(mesh);
+  CHECK(!failing.preprocess()); // an empty region of interest
+  CHECK(omp_get_max_threads() == 2);
+  omp_set_num_threads(threads);
+#else
+  SUCCEED("without OpenMP the package runs on one thread");
 #endif
 }
 

@@ -42,6 +42,57 @@ constexpr std::ptrdiff_t parallel_operator_entries = 200000;
 /// multiply-adds (a few nanoseconds each).
 constexpr std::ptrdiff_t parallel_sparse_products = 1000000;
 
+/// Regions of interest with fewer vertices are prepared (`preprocess()`:
+/// the region, its basis, the first factorizations) with the calling
+/// thread's OpenMP teams on one thread. Their steps are too short for a
+/// team: the idle threads of the team and those of a threaded BLAS wait for
+/// work by spinning and took the cores from the threads doing it. Measured
+/// on two cores with the reference harness: 550 region vertices prepared in
+/// 0.05 s instead of 0.08-0.16 s, 2,174 in 0.25 s instead of 0.30 s, 3,433 in
+/// 0.33 s instead of 0.38-0.42 s; 13,552 in 0.80 s instead of 0.71 s, so
+/// larger regions keep all threads.
+constexpr std::size_t serial_preparation_vertices = 5000;
+/// Regions of interest with fewer vertices are deformed (`deform()`,
+/// `refine()`) with the calling thread's OpenMP teams on one thread, for the
+/// same reason: a drag on 550 region vertices took 2.4 ms instead of 2.6-2.8
+/// ms (and the first one 3 ms instead of 23-29 ms, beside the BLAS threads
+/// still spinning after the basis), while one on 2,174 took 12.5 ms instead
+/// of 6.5 ms.
+constexpr std::size_t serial_deformation_vertices = 1000;
+
+/// While it lives, the OpenMP teams that the calling thread starts run on
+/// one thread when `serial` is true (outside a parallel region). Only the
+/// calling thread's setting changes (`nthreads-var` is a per-thread setting
+/// of OpenMP); the destructor restores it.
+class One_thread_scope
+{
+public:
+  explicit One_thread_scope(bool serial)
+  {
+#ifdef _OPENMP
+    if(serial && !omp_in_parallel() && omp_get_max_threads() > 1)
+    {
+      m_threads = omp_get_max_threads();
+      omp_set_num_threads(1);
+    }
+#else
+    (void)serial;
+#endif
+  }
+  ~One_thread_scope()
+  {
+#ifdef _OPENMP
+    if(m_threads > 0)
+      omp_set_num_threads(m_threads);
+#endif
+  }
+  One_thread_scope(const One_thread_scope&) = delete;
+  One_thread_scope& operator=(const One_thread_scope&) = delete;
+
+private:
+  int m_threads = 0;
+};
+
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
