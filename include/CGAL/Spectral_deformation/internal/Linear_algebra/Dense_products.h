@@ -7,6 +7,8 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_DENSE_PRODUCTS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_DENSE_PRODUCTS_H
 
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -114,6 +116,7 @@ class Threads_for_blas_or_openmp
 {
 public:
   explicit Threads_for_blas_or_openmp(bool process_wide_tuning)
+      : m_openmp(!process_wide_tuning && blas_runs_spinning_threads())
   {
 #ifdef CGAL_SSMD_USE_OPENBLAS
     if(process_wide_tuning)
@@ -121,17 +124,7 @@ public:
       m_blas_threads = openblas_get_num_threads();
       if(m_blas_threads > 1)
         openblas_set_num_threads(1);
-      return;
     }
-#ifdef _OPENMP
-    if(blas_runs_spinning_threads() && !omp_in_parallel())
-    {
-      m_openmp_threads = omp_get_max_threads();
-      omp_set_num_threads(1);
-    }
-#endif
-#else
-    (void)process_wide_tuning;
 #endif
   }
   ~Threads_for_blas_or_openmp()
@@ -139,10 +132,6 @@ public:
 #ifdef CGAL_SSMD_USE_OPENBLAS
     if(m_blas_threads > 1)
       openblas_set_num_threads(m_blas_threads);
-#ifdef _OPENMP
-    if(m_openmp_threads > 0)
-      omp_set_num_threads(m_openmp_threads);
-#endif
 #endif
   }
   Threads_for_blas_or_openmp(const Threads_for_blas_or_openmp&) = delete;
@@ -150,7 +139,7 @@ public:
 
 private:
   int m_blas_threads = 0;
-  int m_openmp_threads = 0;
+  One_thread_scope m_openmp;
 };
 
 // dense_product() split over the OpenMP threads along the long dimension of
