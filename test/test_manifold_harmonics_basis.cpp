@@ -163,6 +163,46 @@ TEST_CASE("dense and Spectra solvers span the same subspace", "[basis]")
                           dense.mass()) < 1e-6);
 }
 
+TEST_CASE("dense symmetric eigenpairs: some or all eigenvectors computed, the same pairs",
+          "[basis][block_lanczos]")
+{
+  // A quarter or more of the pairs are computed with all eigenvectors
+  // (divide and conquer), fewer with only those asked for: both must give
+  // the pairs of Eigen's solver (a random matrix: simple eigenvalues).
+  std::mt19937 generator(7);
+  std::normal_distribution<double> normal;
+  const Eigen::Index n = 80;
+  Eigen::MatrixXd A(n, n);
+  for(Eigen::Index j = 0; j < n; ++j)
+    for(Eigen::Index i = 0; i < n; ++i)
+      A(i, j) = normal(generator);
+  A = (A + A.transpose()).eval();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> reference(A);
+  namespace E = CGAL::Spectral_deformation::internal::Eigensolvers;
+  struct Range { Eigen::Index first, count; };
+  for(const Range range : {Range{0, 10}, Range{70, 10}, Range{0, 40}, Range{45, 35}, Range{5, 20}})
+  {
+    INFO("eigenpairs " << range.first << " to " << range.first + range.count - 1);
+    Eigen::VectorXd values;
+    Eigen::MatrixXd vectors;
+    REQUIRE(E::symmetric_eigenpairs_in_range(A, range.first, range.count, values, vectors));
+    REQUIRE(values.size() == range.count);
+    REQUIRE(vectors.cols() == range.count);
+    CHECK((values - reference.eigenvalues().segment(range.first, range.count)).cwiseAbs().maxCoeff() <
+          1e-10 * reference.eigenvalues().cwiseAbs().maxCoeff());
+    const Eigen::MatrixXd overlap =
+        reference.eigenvectors().middleCols(range.first, range.count).transpose() * vectors;
+    CHECK((overlap.cwiseAbs() - Eigen::MatrixXd::Identity(range.count, range.count))
+              .cwiseAbs()
+              .maxCoeff() < 1e-8);
+  }
+  Eigen::VectorXd largest_values;
+  Eigen::MatrixXd largest_vectors;
+  REQUIRE(E::largest_symmetric_eigenpairs(A, 30, largest_values, largest_vectors));
+  CHECK((largest_values - reference.eigenvalues().tail(30)).cwiseAbs().maxCoeff() <
+        1e-10 * reference.eigenvalues().cwiseAbs().maxCoeff());
+}
+
 TEST_CASE("block Lanczos, Spectra and the dense solver agree", "[basis][block_lanczos]")
 {
   // 2562 vertices; the dense path of both iterative solvers and the fallback

@@ -175,6 +175,7 @@ bool grow_until_converged(Block_lanczos_state& state, const SparseSPDSolverTrait
   Eigen::MatrixXd R;
   start_lanczos(state, R);
   Eigen::Index next_check = first_check_dimension(sizes.m, b);
+  Convergence_forecast forecast;
   for(Eigen::Index k = b;; k += b)
   {
     if(!shift_invert_block(state, solver, k))
@@ -187,7 +188,7 @@ bool grow_until_converged(Block_lanczos_state& state, const SparseSPDSolverTrait
     if(!rayleigh_ritz(state, k, sizes.wanted, tolerance, R, ritz))
       return failure.set("the Rayleigh-Ritz eigensolver did not converge");
     listener.checked(ritz.converged + sizes.known);
-    next_check = next_check_dimension(k, b, sizes.wanted - ritz.converged);
+    next_check = forecast.next_check(k, b, sizes.wanted, ritz);
     if(ritz.converged == sizes.wanted)
       return accept_ritz_pairs(state, ritz, k, sizes, sigma, stiffness, tolerance, eigenvalues,
                                eigenvectors, failure);

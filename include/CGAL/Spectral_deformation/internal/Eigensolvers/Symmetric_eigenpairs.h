@@ -13,11 +13,17 @@
 
 // With a LAPACK (CGAL_SSMD_USE_BLAS: OpenBLAS carries one), dsyevr computes
 // only the eigenvectors asked for, after the reduction to tridiagonal form;
-// Eigen's solver accumulates all of them. On the Rayleigh-Ritz matrices of
-// the block eigensolver (k × k, k of 300 to 600, m of them wanted) and on the
-// small meshes solved densely (m of n wanted) that is the larger part of the
-// cost.
+// Eigen's solver accumulates all of them. On the small meshes solved densely
+// (100 of 620 wanted) that is the larger part of the cost. When a quarter
+// or more of the eigenpairs are wanted, as in the Rayleigh-Ritz checks of the
+// block eigensolver (about 100 of k = 150 to 340), dsyevr's bisection and
+// inverse iteration for that many eigenvectors cost more than computing all
+// of them by divide and conquer (dsyevd): 1.5 to 2.5 times more on those
+// checks (benchmark/NOTES.md, 2026-12-06, fifth).
 #ifdef CGAL_SSMD_USE_BLAS
+extern "C" void dsyevd_(const char* jobz, const char* uplo, const int* n, double* a,
+                        const int* lda, double* w, double* work, const int* lwork, int* iwork,
+                        const int* liwork, int* info);
 extern "C" void dsyevr_(const char* jobz, const char* range, const char* uplo, const int* n,
                         double* a, const int* lda, const double* vl, const double* vu,
                         const int* il, const int* iu, const double* abstol, int* m, double* w,
@@ -29,6 +35,34 @@ namespace CGAL {
 namespace Spectral_deformation {
 namespace internal {
 namespace Eigensolvers {
+
+#ifdef CGAL_SSMD_USE_BLAS
+/// All eigenpairs of the symmetric matrix `A` by dsyevd, of which those of
+/// ranks `first` to `first + count - 1` are returned; `A` is overwritten.
+inline bool symmetric_eigenpairs_by_divide_and_conquer(Eigen::MatrixXd& A, Eigen::Index first,
+                                                       Eigen::Index count, Eigen::VectorXd& values,
+                                                       Eigen::MatrixXd& vectors)
+{
+  const int size = static_cast<int>(A.rows());
+  Eigen::VectorXd all_values(A.rows());
+  double work_size = 0;
+  int iwork_size = 0, query = -1, info = 0;
+  dsyevd_("V", "L", &size, A.data(), &size, all_values.data(), &work_size, &query, &iwork_size,
+          &query, &info);
+  if(info != 0)
+    return false;
+  const int lwork = static_cast<int>(work_size), liwork = iwork_size;
+  std::vector<double> work(static_cast<std::size_t>(lwork));
+  std::vector<int> iwork(static_cast<std::size_t>(liwork));
+  dsyevd_("V", "L", &size, A.data(), &size, all_values.data(), work.data(), &lwork, iwork.data(),
+          &liwork, &info);
+  if(info != 0)
+    return false;
+  values = all_values.segment(first, count);
+  vectors = A.middleCols(first, count);
+  return values.allFinite() && vectors.allFinite();
+}
+#endif
 
 /// The eigenpairs of ranks `first` to `first + count - 1` (ascending order,
 /// from 0) of the symmetric matrix `A` (its lower triangle is read):
@@ -42,6 +76,8 @@ inline bool symmetric_eigenpairs_in_range(Eigen::MatrixXd A, Eigen::Index first,
   if(count < 1 || first < 0 || first + count > n)
     return false;
 #ifdef CGAL_SSMD_USE_BLAS
+  if(4 * count >= n)
+    return symmetric_eigenpairs_by_divide_and_conquer(A, first, count, values, vectors);
   const int size = static_cast<int>(n);
   const int lowest = static_cast<int>(first + 1), highest = static_cast<int>(first + count);
   const double unused = 0, absolute_tolerance = 0;
