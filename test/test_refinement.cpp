@@ -9,6 +9,7 @@
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/arap_energy.h>
+#include <CGAL/Surface_mesh_deformation.h>
 
 #include <catch2/catch.hpp>
 
@@ -16,6 +17,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 using namespace test_meshes;
@@ -181,6 +183,50 @@ TEST_CASE("Refinement: a converged state does not move, and the spectral and spa
   REQUIRE(spectral.refine(100, 0.0));
   CHECK((positions_of(spectral_mesh) - converged).rowwise().norm().maxCoeff() < 1e-6 * diagonal);
   CHECK(spectral.refine_report().energy_after == Approx(spectral.refine_report().energy_before).epsilon(1e-9));
+}
+
+TEST_CASE("Refinement: on a mesh with obtuse corners, the optimum of CGAL's ORIGINAL_ARAP", "[refine]")
+{
+  // A bar whose vertices are moved off their grid: some of its right-angled
+  // corners become obtuse, opposite edges whose other corner is acute.
+  // Clamping each corner's half of an edge's weight (CGAL) or their sum
+  // differs there, and so do the optima.
+  Soup soup = bar(16, 3);
+  std::mt19937 generator(11);
+  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+  for(Point& p : soup.points)
+    p = Point(p.x() + jitter(generator), p.y() + jitter(generator), p.z() + jitter(generator));
+  Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+  Surface_mesh arap_mesh = mesh;
+  const internal::Mesh::Triangle_arrays arrays =
+      internal::Mesh::extract_triangle_arrays(mesh, CGAL::parameters::default_values());
+  std::size_t obtuse_corners = 0;
+  const Eigen::SparseMatrix<double> acute = internal::cotangent_stiffness(arrays, false, &obtuse_corners);
+  const Eigen::SparseMatrix<double> full = internal::cotangent_stiffness(arrays);
+  std::size_t edges_weighed_differently = 0;
+  for(Eigen::Index j = 0; j < full.outerSize(); ++j)
+    for(Eigen::SparseMatrix<double>::InnerIterator it(full, j); it; ++it)
+      if(it.row() < j && std::abs((std::min)(0.0, it.value()) - acute.coeff(it.row(), j)) > 1e-3 * std::abs(it.value()))
+        ++edges_weighed_differently;
+  REQUIRE(obtuse_corners > 20);
+  REQUIRE(edges_weighed_differently > 20);
+
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(pi / 3, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  CGAL::Surface_mesh_deformation<Surface_mesh, CGAL::Default, CGAL::Default, CGAL::ORIGINAL_ARAP> arap(arap_mesh);
+  set_up_bar(arap, arap_mesh, turn, bend_center);
+  REQUIRE(arap.preprocess());
+  arap.deform(3000, 0.0);
+
+  CGAL::Spectral_surface_mesh_deformation<Surface_mesh> deformation(mesh);
+  set_up_bar(deformation, mesh, turn, bend_center);
+  deformation.set_number_of_frequencies(30);
+  deformation.deform();
+  REQUIRE(deformation.deform_report().success);
+  const double diagonal = diagonal_of(positions_of(arap_mesh));
+  CHECK((positions_of(mesh) - positions_of(arap_mesh)).rowwise().norm().maxCoeff() > 1e-3 * diagonal);
+  REQUIRE(deformation.refine(3000, 1e-13));
+  CHECK(deformation.refine_report().converged);
+  CHECK((positions_of(mesh) - positions_of(arap_mesh)).rowwise().norm().maxCoeff() < 1e-5 * diagonal);
 }
 
 TEST_CASE("Refinement: a twisted bar keeps its volume on demand, and loses some without", "[refine][volume]")

@@ -48,10 +48,11 @@ inline std::vector<Stiffness_index> cotangent_column_starts(const Triangle_array
 // Appends to each column its diagonal entry (0, the row sums come apart in
 // `diagonal`) and the half cotangents -cot(c)/2 of the corners c opposite
 // its edges, unsorted; `end` (the column starts on entry) receives the end
-// of each column.
+// of each column. With `obtuse_corners`, the obtuse corners (negative
+// cotangents) count as 0 and are counted there.
 inline void add_half_cotangents(const Triangle_arrays& mesh, Stiffness_index* rows,
                                 double* values, std::vector<Stiffness_index>& end,
-                                Eigen::VectorXd& diagonal)
+                                Eigen::VectorXd& diagonal, std::size_t* obtuse_corners = nullptr)
 {
   auto add = [&](int row, int column, double value) {
     rows[end[column]] = row;
@@ -69,7 +70,12 @@ inline void add_half_cotangents(const Triangle_arrays& mesh, Stiffness_index* ro
       const int j = mesh.triangles(f, (k + 2) % 3);
       const Eigen::Vector3d u = row_vector(mesh.positions, i) - row_vector(mesh.positions, c);
       const Eigen::Vector3d v = row_vector(mesh.positions, j) - row_vector(mesh.positions, c);
-      const double half_cot = 0.5 * u.dot(v) / u.cross(v).norm();
+      double half_cot = 0.5 * u.dot(v) / u.cross(v).norm();
+      if(obtuse_corners != nullptr && half_cot < 0)
+      {
+        half_cot = 0;
+        ++*obtuse_corners;
+      }
       add(i, j, -half_cot);
       add(j, i, -half_cot);
       diagonal[i] += half_cot;
@@ -142,9 +148,12 @@ compress_columns(Eigen::Index n, const std::vector<Stiffness_index>& start,
 /// (no degenerate face), which keeps every cotangent finite. With
 /// `huge_pages`, the temporaries of the assembly are mapped in huge pages
 /// (see Large_array): only when a traits object was asked for process-wide
-/// tuning.
+/// tuning. With `obtuse_corners`, the cotangent of every obtuse corner is
+/// taken as 0 (the weights stay positive: CGAL's `ORIGINAL_ARAP` clamps so)
+/// and the number of such corners is written there.
 inline Eigen::SparseMatrix<double> cotangent_stiffness(const Triangle_arrays& mesh,
-                                                       bool huge_pages = false)
+                                                       bool huge_pages = false,
+                                                       std::size_t* obtuse_corners = nullptr)
 {
   const Eigen::Index n = mesh.number_of_vertices();
   const std::vector<Stiffness_index> start = cotangent_column_starts(mesh);
@@ -156,7 +165,9 @@ inline Eigen::SparseMatrix<double> cotangent_stiffness(const Triangle_arrays& me
   double* values = value_storage.data();
   std::vector<Stiffness_index> end(start.begin(), start.end() - 1);
   Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
-  add_half_cotangents(mesh, rows, values, end, diagonal);
+  if(obtuse_corners != nullptr)
+    *obtuse_corners = 0;
+  add_half_cotangents(mesh, rows, values, end, diagonal, obtuse_corners);
   Stiffness_index nonzeros = 0;
   for(Eigen::Index j = 0; j < n; ++j)
   {

@@ -10,6 +10,7 @@
 #include <CGAL/Spectral_deformation/internal/available_threads.h>
 #include <CGAL/Spectral_deformation/Deformation_reports.h>
 #include <CGAL/Spectral_deformation/Spectral_deformation_error.h>
+#include <CGAL/Spectral_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Constraint_set.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Detail_transfer.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
@@ -34,33 +35,19 @@ namespace Deformation {
 using Mesh::Positions;
 using Mesh::Region_geometry;
 
-/// The cotangent stiffness `stiffness` with its negative weights (positive
-/// off-diagonal entries) set to 0 and its diagonal made again the sum of the
-/// weights of each row; `clamped` tells whether a weight was negative. With
-/// a negative weight the energy below is no sum of squares: its local step
-/// would favour rotations that stretch the edges of obtuse triangles, and
-/// on the meshes of scanned shapes (the armadillo) it goes below 0.
-inline Eigen::SparseMatrix<double> clamped_stiffness(const Eigen::SparseMatrix<double>& stiffness, bool& clamped)
+/// The stiffness of the refinement's weights: the cotangent weights of the
+/// region at rest with the cotangent of every obtuse corner taken as 0, as
+/// CGAL's `ORIGINAL_ARAP` weighs (each half of an edge's weight clamped, not
+/// their sum), so that the refinement converges to the optimum of CGAL's
+/// energy. With a negative weight the energy below is no sum of squares:
+/// its local step would favour rotations that stretch the edges of obtuse
+/// triangles, and on the meshes of scanned shapes (the armadillo) it goes
+/// below 0. `clamped` tells whether a corner was obtuse.
+inline Eigen::SparseMatrix<double> acute_cotangent_stiffness(const Mesh::Triangle_arrays& rest, bool& clamped)
 {
-  Eigen::SparseMatrix<double> result = stiffness;
-  clamped = false;
-  for(Eigen::Index j = 0; j < result.outerSize(); ++j)
-  {
-    double sum = 0;
-    for(Eigen::SparseMatrix<double>::InnerIterator it(result, j); it; ++it)
-      if(it.row() != j)
-      {
-        if(it.value() > 0)
-        {
-          it.valueRef() = 0;
-          clamped = true;
-        }
-        sum -= it.value();
-      }
-    for(Eigen::SparseMatrix<double>::InnerIterator it(result, j); it; ++it)
-      if(it.row() == j)
-        it.valueRef() = sum;
-  }
+  std::size_t obtuse_corners = 0;
+  Eigen::SparseMatrix<double> result = cotangent_stiffness(rest, false, &obtuse_corners);
+  clamped = obtuse_corners > 0;
   if(clamped)
     result.prune(0.0);
   return result;
@@ -72,9 +59,9 @@ inline Eigen::SparseMatrix<double> clamped_stiffness(const Eigen::SparseMatrix<d
 ///   E(x) = min over R of Σ_i Σ_j w_ij ‖(x_i − x_j) − R_i (v_i − v_j)‖²,
 ///
 /// over the one-ring edges ij of every vertex, w_ij the weights of the
-/// stiffness Q that the global step solves with (`clamped_stiffness()`: the
-/// cotangent weights with the negative ones set to 0, as CGAL's
-/// `ORIGINAL_ARAP` does) and v the rest positions, divided by
+/// stiffness Q that the global step solves with (`acute_cotangent_stiffness()`:
+/// the cotangent weights without the obtuse corners, as CGAL's
+/// `ORIGINAL_ARAP` weighs) and v the rest positions, divided by
 /// Σ_i Σ_j w_ij ‖v_i − v_j‖² so that it does not depend on the scale. The rotations that reach the
 /// minimum give the right-hand side of the global step,
 /// b_i = Σ_j w_ij ½(R_i + R_j)(v_i − v_j): both steps lower the same energy,
@@ -87,7 +74,7 @@ inline Eigen::SparseMatrix<double> clamped_stiffness(const Eigen::SparseMatrix<d
 class Arap_local_step
 {
 public:
-  /// `stiffness` the stiffness of the weights (`clamped_stiffness()`), `rest`
+  /// `stiffness` the stiffness of the weights (`acute_cotangent_stiffness()`), `rest`
   /// the rest positions.
   void initialize(const Eigen::SparseMatrix<double>& stiffness, const Positions& rest)
   {
@@ -229,23 +216,24 @@ void refine_as_rigid_as_possible(Arap_local_step& local, const GlobalSolve& solv
 /// The refinement of a region's deformation towards the optimum of the
 /// as-rigid-as-possible energy (`refine_as_rigid_as_possible()`), with the
 /// control vertices on their targets and the fixed ring at rest. Its global
-/// step is a Dirichlet problem of the clamped stiffness (`clamped_stiffness()`):
-/// when no weight of the region is negative that is the stiffness of the
-/// detail transfer, whose exact policy's factorization is reused; otherwise
-/// the refinement factors its own, once per constraint set.
+/// step is a Dirichlet problem of the stiffness without obtuse corners
+/// (`acute_cotangent_stiffness()`): when no corner of the region is obtuse
+/// that is the stiffness of the detail transfer, whose exact policy's
+/// factorization is reused; otherwise the refinement factors its own, once
+/// per constraint set.
 template <class SparseSPDSolverTraits>
 class Arap_refinement
 {
 public:
   typedef Detail_transfer<SparseSPDSolverTraits> System;
 
-  /// For the region `region` of cotangent stiffness `stiffness`; `shared`,
-  /// when not null, a detail transfer set on that stiffness whose factorization
-  /// may be reused (it must outlive this object).
-  void initialize(const Region_geometry& region, const Eigen::SparseMatrix<double>& stiffness, System* shared)
+  /// For the region `region`; `shared`, when not null, a detail transfer set
+  /// on the region's cotangent stiffness whose factorization may be reused
+  /// (it must outlive this object).
+  void initialize(const Region_geometry& region, System* shared)
   {
     bool clamped = false;
-    Eigen::SparseMatrix<double> weights = clamped_stiffness(stiffness, clamped);
+    Eigen::SparseMatrix<double> weights = acute_cotangent_stiffness(region.arrays, clamped);
     m_local_step.initialize(weights, region.arrays.positions);
     m_own.reset();
     m_shared = nullptr;

@@ -86,7 +86,7 @@ public:
     if(!m_refinement)
     {
       m_refinement.reset(new Arap_refinement<SparseSPDSolverTraits>());
-      m_refinement->initialize(region, cotangent_stiffness(region.arrays), nullptr);
+      m_refinement->initialize(region, nullptr);
     }
     m_refinement->refine(region, set, targets, false, max_iterations, tolerance, positions, report);
   }

@@ -190,7 +190,7 @@ public:
               Spectral_refinement_report& report)
   {
     if(!m_refinement.initialized())
-      m_refinement.initialize(region, m_detail.stiffness(), &m_detail);
+      m_refinement.initialize(region, &m_detail);
     m_refinement.refine(region, set, targets, m_detail.preserves_volume(), max_iterations, tolerance, positions,
                         report);
   }
