@@ -94,7 +94,9 @@ def plot(cases, filename):
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
-    cases = sorted((read(log) for log in sys.argv[2:]), key=lambda c: c["region"])
+    # compare.sh's build logs (bench-build.*.log) sit beside the cases' logs.
+    logs = [log for log in sys.argv[2:] if not os.path.basename(log).startswith("bench-build.")]
+    cases = sorted((read(log) for log in logs), key=lambda c: c["region"])
     print(table(cases))
     plot(cases, sys.argv[1])
 
