@@ -193,6 +193,37 @@ TEST_CASE("Partition of unity basis: M-orthonormal, eigenvalues above the exact 
     CHECK(coefficients.col(k).norm() > 0.999);
 }
 
+TEST_CASE("Partition of unity basis: the eigenvectors in float are those in double, rounded", "[pou]")
+{
+  // Approximated (10242 vertices, 400 samples) and solved exactly (642 vertices).
+  for(const int level : {5, 3})
+  {
+    const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(level));
+    const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
+    const Eigen::SparseMatrix<double> stiffness = CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays);
+    const Eigen::VectorXd mass = CGAL::Spectral_deformation::internal::lumped_mass(arrays);
+    Partition_of_unity traits;
+    traits.set_number_of_samples(400);
+    traits.set_vertex_positions(arrays.positions);
+    INFO("icosphere " << level << ", solved exactly: " << traits.solves_exactly(16, arrays.number_of_vertices()));
+    CHECK(traits.solves_exactly(16, arrays.number_of_vertices()) == (level == 3));
+    Eigen::VectorXd values_in_double, values_in_float;
+    Eigen::MatrixXd in_double;
+    Eigen::MatrixXf in_float;
+    REQUIRE(traits.compute(stiffness, mass, 16, values_in_double, in_double));
+    REQUIRE(traits.compute(stiffness, mass, 16, values_in_float, in_float));
+    CHECK((values_in_float - values_in_double).cwiseAbs().maxCoeff() <=
+          1e-12 * values_in_double.cwiseAbs().maxCoeff());
+    REQUIRE(in_float.rows() == in_double.rows());
+    REQUIRE(in_float.cols() == 16);
+    // Rounding leaves half a unit in the last place of float, some 3e-8 of
+    // the largest entry; a column of another eigenvector, or of the other
+    // sign, would be off by the size of the entries.
+    const double largest = in_double.cwiseAbs().maxCoeff();
+    CHECK((in_float.cast<double>() - in_double).cwiseAbs().maxCoeff() <= 1e-7 * largest);
+  }
+}
+
 TEST_CASE("Partition of unity basis: clear failures", "[pou]")
 {
   const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(4));

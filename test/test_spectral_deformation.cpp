@@ -1063,9 +1063,12 @@ namespace {
 
 // The bar of test_meshes, ends fixed (z < 0.3) and moved (z > 4.7) by
 // `top_motion` (a rotation about `axis` through `center`), deformed with
-// `patches` rotation patches (0: the full iteration).
+// `patches` rotation patches (0: the full iteration), or with the patches of
+// `patches_before` first, changed to `patches` once the deformation is
+// preprocessed.
 Eigen::MatrixXd bend_bar_with_patches(std::size_t patches, const Eigen::Matrix3d& top_rotation,
-                           const Eigen::Vector3d& center, unsigned int iterations = 10)
+                           const Eigen::Vector3d& center, unsigned int iterations = 10,
+                           std::vector<std::size_t> patches_before = {})
 {
   Surface_mesh mesh = to_mesh<Surface_mesh>(bar(24, 3));
   Spectral deformation(mesh);
@@ -1080,7 +1083,16 @@ Eigen::MatrixXd bend_bar_with_patches(std::size_t patches, const Eigen::Matrix3d
       top.push_back(v);
   }
   deformation.set_number_of_frequencies(60);
-  deformation.set_rotation_patches(patches);
+  if(patches_before.empty())
+    deformation.set_rotation_patches(patches);
+  else
+  {
+    deformation.set_rotation_patches(patches_before.front());
+    REQUIRE(deformation.preprocess());
+    for(std::size_t count : patches_before)
+      deformation.set_rotation_patches(count);
+    deformation.set_rotation_patches(patches);
+  }
   for(SM_vertex v : top)
   {
     const Point& p = mesh.point(v);
@@ -1292,6 +1304,20 @@ TEST_CASE("more patches approach the full iteration, and under four faces per pa
     INFO(patches << " patches on about 600 faces: largest distance to the full iteration " << distance);
     CHECK(distance < 1e-12);
   }
+}
+
+TEST_CASE("rotation patches changed after preprocess() give the deformation made with them", "[deformation][patches]")
+{
+  // The patches release the rest coordinates of the dual Laplacian energy,
+  // which the full iteration and new patches make again.
+  const Eigen::Matrix3d bend = Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Vector3d center(0, 0, 5.0);
+  const Eigen::MatrixXd full = bend_bar_with_patches(0, bend, center);
+  const Eigen::MatrixXd patched = bend_bar_with_patches(30, bend, center);
+  REQUIRE((full - patched).cwiseAbs().maxCoeff() > 1e-6); // the two iterations differ
+  CHECK((bend_bar_with_patches(0, bend, center, 10, {30}) - full).cwiseAbs().maxCoeff() < 1e-12);
+  CHECK((bend_bar_with_patches(30, bend, center, 10, {30, 0}) - patched).cwiseAbs().maxCoeff() < 1e-12);
+  CHECK((bend_bar_with_patches(30, bend, center, 10, {0, 20}) - patched).cwiseAbs().maxCoeff() < 1e-12);
 }
 
 TEST_CASE("rotation patches reproduce a rigid motion of all constraints", "[deformation][patches]")

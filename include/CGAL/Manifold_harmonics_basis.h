@@ -35,7 +35,8 @@ using Mesh::Triangle_arrays;
 
 /// Makes the sign of every column deterministic: its entry of largest
 /// magnitude (first one on ties) is positive.
-inline void normalize_signs(Eigen::MatrixXd& eigenvectors)
+template <typename Scalar>
+void normalize_signs(Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& eigenvectors)
 {
   for(Eigen::Index k = 0; k < eigenvectors.cols(); ++k)
   {
@@ -48,11 +49,14 @@ inline void normalize_signs(Eigen::MatrixXd& eigenvectors)
 
 /// The m smallest generalized eigenpairs of `stiffness`, the cotangent
 /// stiffness of `mesh` (validated arrays), against its lumped mass. Throws
-/// `Spectral_deformation_error`.
-template <class EigensolverTraits>
+/// `Spectral_deformation_error`. The eigenvectors are in double or in float
+/// (`Scalar`); float ones come straight from an eigensolver that
+/// `Supports_single_precision_eigenvectors`, else rounded from double ones.
+template <class EigensolverTraits, typename Scalar>
 void compute_manifold_harmonics(const Triangle_arrays& mesh, const Eigen::SparseMatrix<double>& stiffness,
                                 Eigen::Index m, EigensolverTraits& eigensolver, Eigen::VectorXd& eigenvalues,
-                                Eigen::MatrixXd& eigenvectors, Eigen::VectorXd& mass)
+                                Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& eigenvectors,
+                                Eigen::VectorXd& mass)
 {
   typedef Spectral_deformation_error Error;
   const Eigen::Index n = mesh.number_of_vertices();
@@ -64,7 +68,18 @@ void compute_manifold_harmonics(const Triangle_arrays& mesh, const Eigen::Sparse
   mass = lumped_mass(mesh);
   if constexpr(Declares_Uses_vertex_positions<EigensolverTraits>::value)
     eigensolver.set_vertex_positions(mesh.positions);
-  if(!eigensolver.compute(stiffness, mass, m, eigenvalues, eigenvectors))
+  bool computed = false;
+  if constexpr(std::is_same_v<Scalar, double> ||
+               Declares_Supports_single_precision_eigenvectors<EigensolverTraits>::value)
+    computed = eigensolver.compute(stiffness, mass, m, eigenvalues, eigenvectors);
+  else
+  {
+    Eigen::MatrixXd in_double;
+    computed = eigensolver.compute(stiffness, mass, m, eigenvalues, in_double);
+    if(computed)
+      eigenvectors = in_double.cast<Scalar>();
+  }
+  if(!computed)
     throw Error(Error::SOLVER_FAILURE,
                 "the manifold harmonics eigensolver failed: " + eigensolver.error_message());
   if(eigenvalues.size() != m || eigenvectors.rows() != n || eigenvectors.cols() != m ||

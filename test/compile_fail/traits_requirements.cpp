@@ -41,11 +41,18 @@ struct Eigensolver_without_positions : CGAL::Block_lanczos_eigensolver_traits<>
   typedef CGAL::Tag_true Uses_vertex_positions;
 };
 
+// Declares eigenvectors in float, without the member.
+struct Eigensolver_without_float_eigenvectors : CGAL::Block_lanczos_eigensolver_traits<>
+{
+  typedef CGAL::Tag_true Supports_single_precision_eigenvectors;
+};
+
 int main()
 {
   CGAL::Block_lanczos_eigensolver_traits<Sparse_solver_without_solve> a;
   CGAL::Partition_of_unity_eigensolver_traits<Sparse_solver_with_a_misspelled_option> b;
   CGAL::Manifold_harmonics_basis<Mesh, Eigensolver_without_error_message> c;
   CGAL::Manifold_harmonics_basis<Mesh, Eigensolver_without_positions> d;
+  CGAL::Manifold_harmonics_basis<Mesh, Eigensolver_without_float_eigenvectors> e;
   return 0;
 }

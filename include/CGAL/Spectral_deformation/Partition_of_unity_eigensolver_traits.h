@@ -23,6 +23,7 @@
 #include <limits>
 #include <new>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -87,6 +88,11 @@ public:
   /// `ManifoldHarmonicsEigensolverTraits`): the sampled functions are built
   /// around vertices chosen by their positions.
   typedef CGAL::Tag_true Uses_vertex_positions;
+  /// Declares the optional `compute()` with the eigenvectors in float (see
+  /// `ManifoldHarmonicsEigensolverTraits`): the prolongation writes each
+  /// eigenvector straight in float, so that a large basis the deformation
+  /// keeps in float never exists in double.
+  typedef CGAL::Tag_true Supports_single_precision_eigenvectors;
   /// Positions of the vertices, one row per vertex.
   typedef Eigen::Matrix<double, Eigen::Dynamic, 3> Positions;
   /// The state of a running `compute()`, passed to the progress callback:
@@ -175,6 +181,27 @@ public:
   bool compute(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
                Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors)
   {
+    return compute_in(stiffness, mass, m, eigenvalues, eigenvectors);
+  }
+
+  /// As above, with the eigenvectors rounded to float: each is computed in
+  /// double and rounded as it is written, so that they take half the memory
+  /// of the double ones at any time (an exact solve of a small mesh is
+  /// rounded once it is done).
+  bool compute(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
+               Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXf& eigenvectors)
+  {
+    return compute_in(stiffness, mass, m, eigenvalues, eigenvectors);
+  }
+
+  /// The reason of the last failure of `compute()`.
+  const std::string& error_message() const { return m_error_message; }
+
+private:
+  template <typename Scalar>
+  bool compute_in(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass, Eigen::Index m,
+                  Eigen::VectorXd& eigenvalues, Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& eigenvectors)
+  {
     m_error_message.clear();
     const Eigen::Index n = stiffness.rows();
     if(m < 1 || m > n)
@@ -184,8 +211,20 @@ public:
       Exact_traits exact;
       exact.set_progress_callback(m_progress_callback);
       exact.set_process_wide_tuning(m_process_wide_tuning);
-      if(exact.compute(stiffness, mass, m, eigenvalues, eigenvectors))
-        return true;
+      if constexpr(std::is_same_v<Scalar, double>)
+      {
+        if(exact.compute(stiffness, mass, m, eigenvalues, eigenvectors))
+          return true;
+      }
+      else
+      {
+        Eigen::MatrixXd computed;
+        if(exact.compute(stiffness, mass, m, eigenvalues, computed))
+        {
+          eigenvectors = computed.cast<Scalar>();
+          return true;
+        }
+      }
       return fail(exact.error_message());
     }
     Progress progress;
@@ -197,12 +236,9 @@ public:
     return success;
   }
 
-  /// The reason of the last failure of `compute()`.
-  const std::string& error_message() const { return m_error_message; }
-
-private:
-  bool approximate(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
-                   Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors)
+  template <typename Scalar>
+  bool approximate(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass, Eigen::Index m,
+                   Eigen::VectorXd& eigenvalues, Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& eigenvectors)
   {
     namespace E = Spectral_deformation::internal::Eigensolvers;
     const Eigen::Index n = stiffness.rows();

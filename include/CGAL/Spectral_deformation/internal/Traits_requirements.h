@@ -41,6 +41,7 @@ CGAL_SSMD_DECLARED_TAG(Supports_process_wide_tuning)
 CGAL_SSMD_DECLARED_TAG(Supports_fill_reducing_ordering)
 CGAL_SSMD_DECLARED_TAG(Supports_row_updates)
 CGAL_SSMD_DECLARED_TAG(Uses_vertex_positions)
+CGAL_SSMD_DECLARED_TAG(Supports_single_precision_eigenvectors)
 #undef CGAL_SSMD_DECLARED_TAG
 
 namespace Members {
@@ -98,6 +99,17 @@ struct Compute<T, std::void_t<decltype(bool(std::declval<T&>().compute(
                       std::declval<const Eigen::SparseMatrix<double>&>(), std::declval<const Eigen::VectorXd&>(),
                       std::declval<Eigen::Index>(), std::declval<Eigen::VectorXd&>(),
                       std::declval<Eigen::MatrixXd&>())))>> : std::true_type
+{};
+
+template <class T, class = void>
+struct Compute_single_precision : std::false_type
+{};
+template <class T>
+struct Compute_single_precision<T, std::void_t<decltype(bool(std::declval<T&>().compute(
+                                       std::declval<const Eigen::SparseMatrix<double>&>(),
+                                       std::declval<const Eigen::VectorXd&>(), std::declval<Eigen::Index>(),
+                                       std::declval<Eigen::VectorXd&>(), std::declval<Eigen::MatrixXf&>())))>>
+  : std::true_type
 {};
 
 template <class T, class = void>
@@ -165,6 +177,10 @@ struct Eigensolver_requirements
   static_assert(!Declares_Uses_vertex_positions<T>::value || Members::Set_vertex_positions<T>::value,
                 "ManifoldHarmonicsEigensolverTraits: the traits class declares Uses_vertex_positions but lacks "
                 "the member void set_vertex_positions(const Eigen::Matrix<double, Eigen::Dynamic, 3>&)");
+  static_assert(!Declares_Supports_single_precision_eigenvectors<T>::value || Members::Compute_single_precision<T>::value,
+                "ManifoldHarmonicsEigensolverTraits: the traits class declares Supports_single_precision_eigenvectors "
+                "but lacks the member bool compute(const Eigen::SparseMatrix<double>& stiffness, "
+                "const Eigen::VectorXd& mass, Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXf& eigenvectors)");
   static constexpr bool met = Process_wide_tuning_requirements<T>::met;
 };
 

@@ -281,10 +281,15 @@ private:
                        const std::vector<int>& rows_by_patch, Eigen::Index n)
   {
     const int patches = static_cast<int>(start.size()) - 1;
-    const Positions rest_centroids = dual.centroids(smooth_rest);
     const Triangles& triangles = dual.triangles();
     const Triangles& neighbours = dual.neighbours();
     const std::vector<int>& row_faces = dual.row_faces();
+    // The rest centroids are formed where they are read, as Dual_mesh_operator::centroids() does.
+    auto rest_centroid = [&](int face) -> Eigen::RowVector3d {
+      return (smooth_rest.row(triangles(face, 0)) + smooth_rest.row(triangles(face, 1)) +
+              smooth_rest.row(triangles(face, 2))) /
+             3.0;
+    };
     std::vector<std::vector<Contribution>> gathered;
 #ifdef _OPENMP
 #pragma omp parallel if(patches > 64)
@@ -298,19 +303,25 @@ private:
       gathered.resize(1);
       std::vector<Contribution>& mine = gathered[0];
 #endif
-      Positions load = Positions::Zero(n, 3), edges = Positions::Zero(n, 3);
-      std::vector<char> seen(static_cast<std::size_t>(n), 0);
+      // A patch touches few vertices: each thread sums their loads and edges
+      // in slots of its own, found by vertex, so that its memory is one
+      // index per vertex rather than two rows of n×3 (times the threads).
+      std::vector<int> slot(static_cast<std::size_t>(n), -1);
       std::vector<int> touched;
-      auto add = [&](Positions& target, int face, const Eigen::RowVector3d& value) {
+      std::vector<Eigen::RowVector3d> load, edges;
+      auto add = [&](std::vector<Eigen::RowVector3d>& target, int face, const Eigen::RowVector3d& value) {
         for(int k = 0; k < 3; ++k)
         {
           const int v = triangles(face, k);
-          if(!seen[static_cast<std::size_t>(v)])
+          int& s = slot[static_cast<std::size_t>(v)];
+          if(s < 0)
           {
-            seen[static_cast<std::size_t>(v)] = 1;
+            s = static_cast<int>(touched.size());
             touched.push_back(v);
+            load.emplace_back(Eigen::RowVector3d::Zero());
+            edges.emplace_back(Eigen::RowVector3d::Zero());
           }
-          target.row(v) += value / 3.0;
+          target[static_cast<std::size_t>(s)] += value / 3.0;
         }
       };
 #ifdef _OPENMP
@@ -330,19 +341,20 @@ private:
           {
             const int a = neighbours(f, j), b = neighbours(f, (j + 1) % 3);
             add(load, a, weights(r, j) * l);
-            const Eigen::RowVector3d rest_edge = rest_centroids.row(b) - rest_centroids.row(a);
+            const Eigen::RowVector3d rest_edge = rest_centroid(b) - rest_centroid(a);
             add(edges, b, rest_edge);
             add(edges, a, -rest_edge);
           }
         }
-        for(int v : touched)
+        for(std::size_t k = 0; k < touched.size(); ++k)
         {
-          mine.push_back(Contribution{v, p, load.row(v), edges.row(v)});
-          load.row(v).setZero();
-          edges.row(v).setZero();
-          seen[static_cast<std::size_t>(v)] = 0;
+          const int v = touched[k];
+          mine.push_back(Contribution{v, p, load[k], edges[k]});
+          slot[static_cast<std::size_t>(v)] = -1;
         }
         touched.clear();
+        load.clear();
+        edges.clear();
       }
     }
     return gathered;

@@ -13,12 +13,15 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Rotated_edges.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -106,12 +109,21 @@ public:
   /// The second half of `initialize()`: the smooth rest positions, whose
   /// one-rings the rotations of a transfer are fitted against. Throws
   /// `Spectral_deformation_error` when `smooth_rest` is not finite.
-  void set_smooth_rest(const Positions& smooth_rest)
+  /// `rotations`, when not null, is a field already fitted on `smooth_rest`
+  /// with the stiffness of `set_mesh()`, which the transfer then shares.
+  void set_smooth_rest(const Positions& smooth_rest,
+                       std::shared_ptr<const Smooth_rotation_field> rotations = nullptr)
   {
     typedef Spectral_deformation_error Error;
     if(!smooth_rest.allFinite())
       throw Error(Error::SOLVER_FAILURE, "the smooth mesh has non-finite coordinates");
-    m_rotated_edges.initialize(m_stiffness, m_rest, smooth_rest);
+    if(rotations != nullptr)
+    {
+      CGAL_precondition(rotations->rest_vertex_major().cols() == smooth_rest.rows());
+      m_rotated_edges.initialize(std::move(rotations), &m_rest);
+    }
+    else
+      m_rotated_edges.initialize(m_stiffness, m_rest, smooth_rest);
   }
 
   /// Whether a transfer keeps the volume enclosed by the surface, when it is

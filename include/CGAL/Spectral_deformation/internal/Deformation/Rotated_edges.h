@@ -11,10 +11,14 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Smooth_rotation_field.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Triangle_arrays.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -40,27 +44,45 @@ public:
   void initialize(const Eigen::SparseMatrix<double>& stiffness, const Positions& edge_rest,
                   const Positions& rotation_rest)
   {
-    m_rotations.initialize(stiffness, rotation_rest);
+    auto rotations = std::make_shared<Smooth_rotation_field>();
+    rotations->initialize(stiffness, rotation_rest);
+    initialize(std::move(rotations), &edge_rest);
+  }
+
+  /// With the rotations of `rotations`, shared (by the detail transfer and
+  /// the iteration of the reduced space, which fit them on the same smooth
+  /// mesh: on large regions its adjacency is among the largest arrays of a
+  /// deformation), and the rest edges of `edge_rest`, or those of the
+  /// smooth rest mesh of `rotations` when `edge_rest` is null.
+  void initialize(std::shared_ptr<const Smooth_rotation_field> rotations, const Positions* edge_rest)
+  {
+    CGAL_precondition(rotations != nullptr);
+    m_rotations = std::move(rotations);
     // The weighted rest edges ½ w_ij (v_i − v_j) are formed at each
     // evaluation from the positions, one vertex per cache line, rather than
     // stored per edge (six times the memory, and as long to stream).
-    m_edge_rest_vertex_major = edge_rest.transpose();
+    if(edge_rest != nullptr)
+      m_edge_rest_vertex_major = edge_rest->transpose();
+    else
+      m_edge_rest_vertex_major.resize(3, 0);
   }
 
-  const Smooth_rotation_field& rotation_field() const { return m_rotations; }
+  const Smooth_rotation_field& rotation_field() const { return *m_rotations; }
+  /// The field, to be shared by another `Rotated_edges` (null before `initialize()`).
+  const std::shared_ptr<const Smooth_rotation_field>& shared_rotation_field() const { return m_rotations; }
 
   /// b for the rotations that carry the smooth rest mesh to `smooth_deformed`
   /// (n×3, valid until the next call).
   const Eigen::MatrixXd& evaluate(const Positions& smooth_deformed) const
   {
-    m_rotations.compute(smooth_deformed, m_rotation_workspace);
+    m_rotations->compute(smooth_deformed, m_rotation_workspace);
     return evaluate_with_rotations();
   }
 
   /// As above, with the positions one column per vertex.
   const Eigen::MatrixXd& evaluate(const Smooth_rotation_field::Vertex_major_positions& smooth_deformed) const
   {
-    m_rotations.compute(smooth_deformed, m_rotation_workspace);
+    m_rotations->compute(smooth_deformed, m_rotation_workspace);
     return evaluate_with_rotations();
   }
 
@@ -68,8 +90,9 @@ private:
   const Eigen::MatrixXd& evaluate_with_rotations() const
   {
     const std::vector<Eigen::Matrix3d>& R = m_rotation_workspace;
-    const Cotangent_adjacency& a = m_rotations.adjacency();
-    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(m_edge_rest_vertex_major.cols());
+    const Cotangent_adjacency& a = m_rotations->adjacency();
+    const Smooth_rotation_field::Vertex_major_positions& v = edge_rest();
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(v.cols());
     Eigen::MatrixXd& rhs = m_right_hand_side;
     rhs.resize(n, 3);
 #ifdef _OPENMP
@@ -81,27 +104,33 @@ private:
       // turns with the vertex's own rotation is one product; the other half
       // turns with each neighbour's rotation.
       const int begin = a.start[static_cast<std::size_t>(i)], end = a.start[static_cast<std::size_t>(i) + 1];
-      const Eigen::Vector3d vi = m_edge_rest_vertex_major.col(i);
+      const Eigen::Vector3d vi = v.col(i);
       Eigen::Vector3d own_half = Eigen::Vector3d::Zero();
       for(int s = begin; s < end; ++s)
-        own_half += half_edge(a, s, vi);
+        own_half += half_edge(a, v, s, vi);
       Eigen::Vector3d sum = R[static_cast<std::size_t>(i)] * own_half;
       for(int s = begin; s < end; ++s)
-        sum.noalias() += R[static_cast<std::size_t>(a.neighbours[static_cast<std::size_t>(s)])] * half_edge(a, s, vi);
+        sum.noalias() += R[static_cast<std::size_t>(a.neighbours[static_cast<std::size_t>(s)])] * half_edge(a, v, s, vi);
       rhs.row(i) = sum.transpose();
     }
     return rhs;
   }
 
   // ½ w_ij (v_i − v_j) for the edge s of the adjacency, j its neighbour.
-  Eigen::Vector3d half_edge(const Cotangent_adjacency& a, int s, const Eigen::Vector3d& vi) const
+  static Eigen::Vector3d half_edge(const Cotangent_adjacency& a, const Smooth_rotation_field::Vertex_major_positions& v,
+                                   int s, const Eigen::Vector3d& vi)
   {
-    return (0.5 * a.weights[static_cast<std::size_t>(s)]) *
-           (vi - m_edge_rest_vertex_major.col(a.neighbours[static_cast<std::size_t>(s)]));
+    return (0.5 * a.weights[static_cast<std::size_t>(s)]) * (vi - v.col(a.neighbours[static_cast<std::size_t>(s)]));
   }
 
-  Smooth_rotation_field m_rotations;
-  Smooth_rotation_field::Vertex_major_positions m_edge_rest_vertex_major; // v
+  // v: the rest positions whose edges are turned.
+  const Smooth_rotation_field::Vertex_major_positions& edge_rest() const
+  {
+    return m_edge_rest_vertex_major.cols() != 0 ? m_edge_rest_vertex_major : m_rotations->rest_vertex_major();
+  }
+
+  std::shared_ptr<const Smooth_rotation_field> m_rotations;
+  Smooth_rotation_field::Vertex_major_positions m_edge_rest_vertex_major; // v, when not the smooth rest
   // Buffers of an evaluation, kept between calls: on large meshes, fresh
   // pages for them cost more than the arithmetic.
   mutable std::vector<Eigen::Matrix3d> m_rotation_workspace;

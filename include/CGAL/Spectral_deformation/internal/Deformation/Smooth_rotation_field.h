@@ -131,6 +131,8 @@ public:
 
   /// The edges and their cotangent weights.
   const Cotangent_adjacency& adjacency() const { return m_adjacency; }
+  /// The smooth rest positions, one column per vertex.
+  const Vertex_major_positions& rest_vertex_major() const { return m_rest_vertex_major; }
 
   /// Number of vertices whose rotation is carried on from their neighbours.
   std::size_t number_of_undetermined_vertices() const { return m_order.size(); }

@@ -24,6 +24,7 @@
 #include <Eigen/Sparse>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -97,10 +98,10 @@ private:
         m_basis->multiply(m_rest_coefficients, m_smooth_rest);
       }
     });
+    release_rest_coordinates(); // those of an earlier mesh or smooth rest shape
     if(uses_dual_energy())
     {
-      m_rest_coordinates = m_dual.evaluate(m_smooth_rest);
-      m_negative_heights = -m_rest_coordinates.heights;
+      make_rest_coordinates();
       const Dual_coordinates& rest_coordinates = m_rest_coordinates;
       basis.visit([this, &rest_coordinates](const auto& H) {
         Linear_algebra::gram_in_basis(
@@ -112,11 +113,7 @@ private:
       });
     }
     else
-    {
-      m_rest_coordinates = Dual_coordinates();
-      m_negative_heights.resize(0);
       m_G0.setZero(basis.cols(), basis.cols());
-    }
     m_arap_scale = 1;
     if(uses_arap_energy())
     {
@@ -127,7 +124,9 @@ private:
         stiffness = &computed;
       }
       const Eigen::SparseMatrix<double>& Q = *stiffness;
-      m_rotated_edges.initialize(Q, m_smooth_rest, m_smooth_rest);
+      auto rotations = std::make_shared<Smooth_rotation_field>();
+      rotations->initialize(Q, m_smooth_rest);
+      m_rotated_edges.initialize(std::move(rotations), nullptr);
       Eigen::MatrixXd arap;
       basis.visit([&Q, &arap](const auto& H) { Linear_algebra::sparse_in_basis(Q, H, arap); });
       // The sum weighs the two energies alike: its two matrices get the same
@@ -167,6 +166,13 @@ public:
   }
 
   const Positions& smooth_rest() const { return m_smooth_rest; }
+  /// The rotation field of the ARAP energy, fitted on the one-rings of
+  /// `smooth_rest()` with the stiffness of `initialize()`, for the detail
+  /// transfer to share (null when the energy has no ARAP term).
+  std::shared_ptr<const Smooth_rotation_field> shared_rotation_field() const
+  {
+    return uses_arap_energy() ? m_rotated_edges.shared_rotation_field() : nullptr;
+  }
   /// The smooth shape H `coefficients` (n×3).
   Positions shape(const Eigen::MatrixXd& coefficients) const
   {
@@ -321,12 +327,34 @@ private:
            m_dual.number_of_faces() >= minimum_faces_per_patch * static_cast<Eigen::Index>(m_patch_count);
   }
 
+  // The dual Laplacian coordinates of the smooth rest mesh, per dual vertex
+  // (as many as the faces of the region), are read by the full iteration
+  // and to make the patches, not by the patched iteration: the patches
+  // release them, and they are made again, the same, when the full
+  // iteration or new patches need them.
+  void make_rest_coordinates()
+  {
+    if(!uses_dual_energy() || m_negative_heights.size() != 0)
+      return;
+    m_rest_coordinates = m_dual.evaluate(m_smooth_rest);
+    m_negative_heights = -m_rest_coordinates.heights;
+    m_rest_coordinates.heights = Eigen::VectorXd(); // read as m_negative_heights
+  }
+
+  void release_rest_coordinates()
+  {
+    m_rest_coordinates = Dual_coordinates();
+    m_negative_heights = Eigen::VectorXd();
+  }
+
   void build_patches()
   {
     m_patches = Clustered_rotation_rhs();
     m_arap_patches = Clustered_rotation_rhs();
+    make_rest_coordinates();
     if(!uses_patches())
       return;
+    m_rest_coordinates.normals = Positions(); // the patches read the weights and the coordinates
     // Both groupings come from one grouping of the faces, whose centroids
     // are freed before the products are made.
     std::vector<int> patch_of_vertex, patch_of_row;
@@ -349,6 +377,7 @@ private:
         m_patches.initialize(H, m_dual, m_rest_coordinates.weights, m_rest_coordinates.coordinates,
                              m_smooth_rest, patch_of_row);
       });
+    release_rest_coordinates();
   }
 
   // The iteration of solve() with the rotations of the patches: no step

@@ -79,8 +79,13 @@ public:
     m_detail.set_volume_preservation(settings.preserve_volume, region.is_fixed);
     const Eigen::SparseMatrix<double>& stiffness = m_detail.stiffness();
     const Basis::Basis_match match = Basis::basis_match(supplied, region, region_fingerprint);
+    const bool single_precision = static_cast<std::size_t>(region.arrays.number_of_vertices()) >=
+                                  settings.single_precision_basis_threshold;
     if(match != Basis::Basis_match::NONE)
+    {
       m_basis = Basis::in_region_order(supplied, region, match, region_fingerprint);
+      m_stored_basis.assign(std::move(m_basis.basis), single_precision);
+    }
     else
     {
       const auto start = std::chrono::steady_clock::now();
@@ -88,24 +93,35 @@ public:
                                                     region.arrays.number_of_vertices());
       EigensolverTraits solver = eigensolver;
       const bool overlap = first_set != nullptr && settings.policy == EXACT_CONSTRAINTS && !tuning;
+      // A basis kept in float is computed in float, when the eigensolver
+      // can: on large regions the double one would be the largest
+      // allocation of the deformation.
       overlapped(overlap ? prescribed_flags(region, *first_set) : std::vector<char>(), [&] {
-        compute_manifold_harmonics(region.arrays, stiffness, m, solver, m_basis.eigenvalues, m_basis.basis,
-                                   m_basis.mass);
+        if(single_precision)
+        {
+          Eigen::MatrixXf basis;
+          compute_manifold_harmonics(region.arrays, stiffness, m, solver, m_basis.eigenvalues, basis,
+                                     m_basis.mass);
+          m_stored_basis.assign(std::move(basis));
+        }
+        else
+        {
+          compute_manifold_harmonics(region.arrays, stiffness, m, solver, m_basis.eigenvalues, m_basis.basis,
+                                     m_basis.mass);
+          m_stored_basis.assign(std::move(m_basis.basis), false);
+        }
       });
       m_basis.number_of_faces = static_cast<std::uint64_t>(region.arrays.number_of_faces());
       m_basis.fingerprint = region_fingerprint;
       report.basis_computed = true;
       report.basis_seconds = seconds_since(start);
     }
-    m_stored_basis.assign(std::move(m_basis.basis),
-                          static_cast<std::size_t>(region.arrays.number_of_vertices()) >=
-                              settings.single_precision_basis_threshold);
     m_solver.set_rotation_patches(settings.rotation_patches);
     // Without iterations there are no rotations to fit: the linear
     // algorithm keeps the paper's system.
     m_solver.set_smooth_energy(Iterated ? settings.smooth_energy : DUAL_LAPLACIAN_ENERGY);
     m_solver.initialize(m_stored_basis, m_basis.mass, region.arrays, stiffness);
-    m_detail.set_smooth_rest(m_solver.smooth_rest());
+    m_detail.set_smooth_rest(m_solver.smooth_rest(), m_solver.shared_rotation_field());
     m_has_solution = false;
   }
 

@@ -217,11 +217,13 @@ partition_of_unity_functions(const Edge_length_graph& graph,
   return functions;
 }
 
-// H = P Y by panels of rows on all threads: each panel of H is summed in a
-// small row-major buffer from the rows of P and of Y, then written to the
-// column-major H.
-inline void prolongate(const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows,
-                       const Eigen::MatrixXd& coefficients, Eigen::MatrixXd& result)
+// H = P Y by panels of rows on all threads: each panel of H is summed in
+// double in a small row-major buffer from the rows of P and of Y, then
+// written to the column-major H, of scalar type `Scalar`: a float H is the
+// rounding of the double one, and never needs the double one's memory.
+template <typename Scalar>
+void prolongate(const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows, const Eigen::MatrixXd& coefficients,
+                Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& result)
 {
   const Eigen::Index n = rows.rows();
   const Eigen::Index m = coefficients.cols();
@@ -248,7 +250,7 @@ inline void prolongate(const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows,
         for(Eigen::Index r = 0; r < count; ++r)
           for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator p(rows, first + r); p; ++p)
             buffer->row(r) += p.value() * y.row(p.col());
-        result.middleRows(first, count) = buffer->topRows(count);
+        result.middleRows(first, count) = buffer->topRows(count).template cast<Scalar>();
       });
   }
   failure.rethrow();
@@ -323,11 +325,11 @@ private:
 // reduced pair (Pᵀ Q P, Pᵀ M P), then H = P Y. Returns false with `message`
 // set when the reduced problem is too small, singular or does not converge.
 // `functions` is released once the reduced pair is made (H is made from a
-// copy by rows).
-template <class SparseSPDSolverTraits>
+// copy by rows). H is in double or float (`Scalar`).
+template <class SparseSPDSolverTraits, typename Scalar>
 bool reduced_eigenpairs(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
                         Eigen::SparseMatrix<double>&& functions, Eigen::Index m,
-                        Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
+                        Eigen::VectorXd& eigenvalues, Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& eigenvectors,
                         std::string& message)
 {
   const Eigen::Index reduced = functions.cols();

@@ -190,6 +190,15 @@ public:
     m_single = single_precision;
   }
 
+  /// Takes `basis`, kept in float; `basis` is left empty.
+  void assign(Eigen::MatrixXf&& basis)
+  {
+    m_float.swap(basis);
+    m_double = Eigen::MatrixXd();
+    basis = Eigen::MatrixXf();
+    m_single = true;
+  }
+
   bool empty() const { return rows() == 0; }
   bool single_precision() const { return m_single; }
   Eigen::Index rows() const { return m_single ? m_float.rows() : m_double.rows(); }
