@@ -74,8 +74,11 @@ void compute_manifold_harmonics(const Triangle_arrays& mesh, const Eigen::Sparse
     computed = eigensolver.compute(stiffness, mass, m, eigenvalues, eigenvectors);
   else
   {
+    // The signs fixed in double, as for a double basis, then rounded.
     Eigen::MatrixXd in_double;
     computed = eigensolver.compute(stiffness, mass, m, eigenvalues, in_double);
+    if(computed && in_double.allFinite())
+      normalize_signs(in_double);
     if(computed)
       eigenvectors = in_double.cast<Scalar>();
   }
@@ -86,7 +89,13 @@ void compute_manifold_harmonics(const Triangle_arrays& mesh, const Eigen::Sparse
      !eigenvalues.allFinite() || !eigenvectors.allFinite())
     throw Error(Error::SOLVER_FAILURE,
                 "the manifold harmonics eigensolver returned an incomplete or non-finite result");
-  normalize_signs(eigenvectors);
+  // Float eigenvectors from the eigensolver have their signs fixed on the
+  // rounded values: a column whose two largest entries of opposite signs
+  // round to the same float may take the other sign than in double, which
+  // changes no deformation (its coefficients change sign with it).
+  if constexpr(std::is_same_v<Scalar, double> ||
+               Declares_Supports_single_precision_eigenvectors<EigensolverTraits>::value)
+    normalize_signs(eigenvectors);
 }
 
 /// The same, with the cotangent stiffness assembled here (in huge pages when

@@ -184,10 +184,10 @@ public:
     return compute_in(stiffness, mass, m, eigenvalues, eigenvectors);
   }
 
-  /// As above, with the eigenvectors rounded to float: each is computed in
-  /// double and rounded as it is written, so that they take half the memory
-  /// of the double ones at any time (an exact solve of a small mesh is
-  /// rounded once it is done).
+  /// As above, with the eigenvectors rounded to float: the prolongation
+  /// sums them in double by panels of rows and rounds each panel as it
+  /// writes it, so that they take half the memory of the double ones at any
+  /// time (an exact solve of a small mesh is rounded once it is done).
   bool compute(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
                Eigen::Index m, Eigen::VectorXd& eigenvalues, Eigen::MatrixXf& eigenvectors)
   {

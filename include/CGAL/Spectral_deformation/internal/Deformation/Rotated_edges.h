@@ -53,7 +53,9 @@ public:
   /// the iteration of the reduced space, which fit them on the same smooth
   /// mesh: on large regions its adjacency is among the largest arrays of a
   /// deformation), and the rest edges of `edge_rest`, or those of the
-  /// smooth rest mesh of `rotations` when `edge_rest` is null.
+  /// smooth rest mesh of `rotations` when `edge_rest` is null. The field's
+  /// `compute()` uses buffers of its own: the `Rotated_edges` that share a
+  /// field must not evaluate at the same time.
   void initialize(std::shared_ptr<const Smooth_rotation_field> rotations, const Positions* edge_rest)
   {
     CGAL_precondition(rotations != nullptr);
@@ -67,7 +69,11 @@ public:
       m_edge_rest_vertex_major.resize(3, 0);
   }
 
-  const Smooth_rotation_field& rotation_field() const { return *m_rotations; }
+  const Smooth_rotation_field& rotation_field() const
+  {
+    CGAL_precondition(m_rotations != nullptr);
+    return *m_rotations;
+  }
   /// The field, to be shared by another `Rotated_edges` (null before `initialize()`).
   const std::shared_ptr<const Smooth_rotation_field>& shared_rotation_field() const { return m_rotations; }
 
@@ -75,6 +81,7 @@ public:
   /// (n×3, valid until the next call).
   const Eigen::MatrixXd& evaluate(const Positions& smooth_deformed) const
   {
+    CGAL_precondition(m_rotations != nullptr);
     m_rotations->compute(smooth_deformed, m_rotation_workspace);
     return evaluate_with_rotations();
   }
@@ -82,6 +89,7 @@ public:
   /// As above, with the positions one column per vertex.
   const Eigen::MatrixXd& evaluate(const Smooth_rotation_field::Vertex_major_positions& smooth_deformed) const
   {
+    CGAL_precondition(m_rotations != nullptr);
     m_rotations->compute(smooth_deformed, m_rotation_workspace);
     return evaluate_with_rotations();
   }

@@ -334,7 +334,8 @@ private:
   // iteration or new patches need them.
   void make_rest_coordinates()
   {
-    if(!uses_dual_energy() || m_negative_heights.size() != 0)
+    // Made anew unless whole (a throw while patches were made can leave them in part).
+    if(!uses_dual_energy() || (m_negative_heights.size() != 0 && m_rest_coordinates.normals.rows() != 0))
       return;
     m_rest_coordinates = m_dual.evaluate(m_smooth_rest);
     m_negative_heights = -m_rest_coordinates.heights;

@@ -243,6 +243,8 @@ public:
       return;
     m_solver.set_smooth_energy(energy);
     m_solver.initialize(m_stored_basis, m_basis.mass, region.arrays, m_detail.stiffness());
+    if(m_solver.shared_rotation_field() != nullptr)
+      m_detail.set_smooth_rest(m_solver.smooth_rest(), m_solver.shared_rotation_field());
     m_has_solution = false;
   }
   bool has_basis() const { return !m_stored_basis.empty(); }
