@@ -16,7 +16,6 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-
 #include <cstddef>
 #include <memory>
 #include <vector>
