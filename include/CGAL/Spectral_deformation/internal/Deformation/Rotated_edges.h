@@ -43,9 +43,7 @@ public:
   void initialize(const Eigen::SparseMatrix<double>& stiffness, const Positions& edge_rest,
                   const Positions& rotation_rest)
   {
-    auto rotations = std::make_shared<Smooth_rotation_field>();
-    rotations->initialize(stiffness, rotation_rest);
-    initialize(std::move(rotations), &edge_rest);
+    initialize(Smooth_rotation_field::make_shared(stiffness, rotation_rest), &edge_rest);
   }
 
   /// With the rotations of `rotations`, shared (by the detail transfer and

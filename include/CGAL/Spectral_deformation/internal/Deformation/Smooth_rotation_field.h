@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <deque>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -94,6 +95,16 @@ public:
   /// a squared ratio of the second to the first principal extent of the
   /// smooth one-ring (0.01: extents in a ratio below 1 : 10).
   static constexpr double rank_two_ratio = 1e-2;
+
+  /// A field initialized with `initialize(stiffness, smooth_rest)`, to be
+  /// shared by the `Rotated_edges` that turn edges with it.
+  static std::shared_ptr<const Smooth_rotation_field> make_shared(const Eigen::SparseMatrix<double>& stiffness,
+                                                                  const Positions& smooth_rest)
+  {
+    auto field = std::make_shared<Smooth_rotation_field>();
+    field->initialize(stiffness, smooth_rest);
+    return field;
+  }
 
   /// `stiffness` the cotangent stiffness matrix of the detailed mesh, whose
   /// weights weigh the edges; `smooth_rest` the rest positions of the smooth

@@ -124,9 +124,7 @@ private:
         stiffness = &computed;
       }
       const Eigen::SparseMatrix<double>& Q = *stiffness;
-      auto rotations = std::make_shared<Smooth_rotation_field>();
-      rotations->initialize(Q, m_smooth_rest);
-      m_rotated_edges.initialize(std::move(rotations), nullptr);
+      m_rotated_edges.initialize(Smooth_rotation_field::make_shared(Q, m_smooth_rest), nullptr);
       Eigen::MatrixXd arap;
       basis.visit([&Q, &arap](const auto& H) { Linear_algebra::sparse_in_basis(Q, H, arap); });
       // The sum weighs the two energies alike: its two matrices get the same
