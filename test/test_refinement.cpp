@@ -4,11 +4,13 @@
 // its value checked against an independent evaluation, the rigid motion
 // found from the rest shape, a converged state kept, the same optimum from
 // the spectral and the spatial results and under both constraint policies,
-// the volume kept on demand, and failures that leave the mesh unchanged.
+// the volume kept on demand, and failures that leave the mesh unchanged;
+// the extrapolation that accelerates it.
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/arap_energy.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Anderson_acceleration.h>
 #include <CGAL/Surface_mesh_deformation.h>
 
 #include <catch2/catch.hpp>
@@ -81,6 +83,55 @@ const Eigen::Matrix3d bend = Eigen::AngleAxisd(pi / 2, Eigen::Vector3d::UnitX())
 const Eigen::Vector3d bend_center(0, 0, 5.0);
 
 } // namespace
+
+TEST_CASE("Anderson acceleration: a linear contraction solved in a few steps, entries equal in every image kept exactly",
+          "[refine]")
+{
+  // x <- G(x) with the first row turned and shrunk by 0.95 about a fixed
+  // point, the second row always the same (a prescribed vertex). The plain
+  // iteration gains a factor 0.95 per step; extrapolating from as many
+  // differences as there are unknowns (3) solves a linear problem in a few
+  // steps, as GMRES would.
+  typedef internal::Mesh::Positions Positions;
+  const Eigen::Matrix3d contraction =
+      0.95 * Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, -2, 2).normalized()).toRotationMatrix();
+  const Eigen::RowVector3d fixed_point(0.3, -1.1, 2.0), prescribed(0.1, 1.0 / 3.0, -0.7);
+  const auto G = [&](const Positions& x) {
+    Positions image(2, 3);
+    image.row(0) = (x.row(0) - fixed_point) * contraction.transpose() + fixed_point;
+    image.row(1) = prescribed;
+    return image;
+  };
+  Positions start(2, 3);
+  start << 4.0, 0.5, -3.0, 0.1, 1.0 / 3.0, -0.7;
+
+  Positions plain = start;
+  for(int k = 0; k < 12; ++k)
+    plain = G(plain);
+  CHECK((plain.row(0) - fixed_point).norm() > 0.3 * (start.row(0) - fixed_point).norm());
+
+  internal::Linear_algebra::Anderson_acceleration<Positions> anderson(5);
+  Positions x = start, accelerated;
+  bool extrapolated_once = false;
+  for(int k = 0; k < 12; ++k)
+  {
+    const Positions image = G(x);
+    if(anderson.extrapolate(x, image, accelerated))
+    {
+      extrapolated_once = true;
+      CHECK(accelerated.row(1) == prescribed);
+      x = accelerated;
+    }
+    else
+      x = image;
+  }
+  CHECK(extrapolated_once);
+  CHECK((x.row(0) - fixed_point).norm() < 1e-9 * (start.row(0) - fixed_point).norm());
+
+  // After reset() the next call has nothing to extrapolate from.
+  anderson.reset();
+  CHECK_FALSE(anderson.extrapolate(x, G(x), accelerated));
+}
 
 TEST_CASE("Refinement: the energy never rises, matches an independent evaluation, and the handles stay on target",
           "[refine]")

@@ -16,11 +16,13 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Smooth_rotation_field.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/rigid_fit.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Anderson_acceleration.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -185,9 +187,16 @@ inline void place_constrained(const Constraint_set& set, const Positions& target
 /// `tolerance` times its value. Fills the iterations, energies, times and
 /// convergence of `report`; throws `Spectral_deformation_error` when a solve
 /// fails or gives non-finite positions (`positions` is then unspecified).
+///
+/// With `acceleration_history` > 0 each iteration also extrapolates from the
+/// last iterates (`Linear_algebra::Anderson_acceleration`) and keeps the
+/// extrapolated positions when their energy is below the current one, else
+/// the plain step's, whose energy is never above it: the energy still falls
+/// at every iteration, and the prescribed vertices stay on their places.
 template <class GlobalSolve>
 void refine_as_rigid_as_possible(Arap_local_step& local, const GlobalSolve& solve, Positions& positions,
-                                 unsigned int max_iterations, double tolerance, Spectral_refinement_report& report)
+                                 unsigned int max_iterations, double tolerance, Spectral_refinement_report& report,
+                                 Eigen::Index acceleration_history = 0)
 {
   typedef Spectral_deformation_error Error;
   const auto start = std::chrono::steady_clock::now();
@@ -197,14 +206,31 @@ void refine_as_rigid_as_possible(Arap_local_step& local, const GlobalSolve& solv
   report.seconds_at_iteration.assign(1, seconds_since(start));
   report.iterations = 0;
   report.converged = !(energy > 0); // a rigid motion of the rest shape stays where it is
-  Positions next;
+  Positions image, accelerated;
+  Linear_algebra::Anderson_acceleration<Positions> anderson((std::max<Eigen::Index>)(acceleration_history, 1));
   while(!report.converged && report.iterations < max_iterations)
   {
-    if(!solve(local.right_hand_side(), next) || !next.allFinite())
+    if(!solve(local.right_hand_side(), image) || !image.allFinite())
       throw Error(Error::SOLVER_FAILURE, "the refinement's solve produced non-finite positions");
-    positions.swap(next);
     const double previous = energy;
-    energy = local.fit(positions);
+    bool extrapolated = false;
+    if(acceleration_history > 0 && anderson.extrapolate(positions, image, accelerated) && accelerated.allFinite())
+    {
+      const double candidate = local.fit(accelerated);
+      extrapolated = candidate < previous;
+      if(extrapolated)
+      {
+        positions.swap(accelerated);
+        energy = candidate;
+      }
+      else
+        anderson.reset();
+    }
+    if(!extrapolated)
+    {
+      positions.swap(image);
+      energy = local.fit(positions);
+    }
     ++report.iterations;
     report.energies.push_back(energy);
     report.seconds_at_iteration.push_back(seconds_since(start));
@@ -226,6 +252,10 @@ class Arap_refinement
 {
 public:
   typedef Detail_transfer<SparseSPDSolverTraits> System;
+
+  /// The iterates the extrapolation of `refine_as_rigid_as_possible()`
+  /// combines.
+  static constexpr Eigen::Index acceleration_history = 5;
 
   /// For the region `region`; `shared`, when not null, a detail transfer set
   /// on the region's cotangent stiffness whose factorization may be reused
@@ -265,12 +295,14 @@ public:
       throw Error(Error::SOLVER_FAILURE, "the factorization of the refinement's system failed");
     report.factorization_seconds = seconds_since(start);
     place_constrained(set, targets, m_prescribed, positions);
+    // The extrapolation combines shapes linearly, which does not keep
+    // their volume: the volume-keeping refinement takes plain steps.
     refine_as_rigid_as_possible(
         m_local_step,
         [this, &system](const Eigen::MatrixXd& rhs, Positions& out) {
           return system.solve_dirichlet(rhs, m_prescribed, out);
         },
-        positions, max_iterations, tolerance, report);
+        positions, max_iterations, tolerance, report, system.preserves_volume() ? 0 : acceleration_history);
     report.volume_preserved = system.preserves_volume();
   }
 
