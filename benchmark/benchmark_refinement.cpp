@@ -14,6 +14,9 @@
 //
 // Usage: benchmark_refinement --output FILE.md [--data FILE.tsv] [--case FILE.case] [--levels 0,1]
 //        [--cgal-iterations N] [--package-iterations N] [--keep-volume] [--mesh-output DIR]
+//        [--cgal-data FILE.tsv]
+// --cgal-data reads CGAL ARAP's curves from an earlier run's --data instead of
+// running it again (at 416k vertices it runs for more than an hour).
 
 #include "cgal_arap_solver_traits.h"
 #include "deformation_cases.h"
@@ -22,6 +25,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -40,6 +44,7 @@ struct Options
   unsigned int package_iterations = 500;
   bool keep_volume = false;
   std::string mesh_output; // directory for the last shapes of both; empty: none
+  std::string cgal_data;   // CGAL ARAP's curves from an earlier run's --data; empty: run CGAL ARAP
 };
 
 void print_usage(const char* program)
@@ -47,7 +52,8 @@ void print_usage(const char* program)
   std::cerr << "usage: " << program
             << " --output FILE.md [--data FILE.tsv] [--case FILE.case] [--meshes DIR] [--levels 0,1]\n"
                "       [--cgal-iterations N (2000)] [--package-iterations N (500)] [--keep-volume]\n"
-               "       [--mesh-output DIR (the last shapes, NAME_LEVEL_package.off and ..._cgal.off)]\n";
+               "       [--mesh-output DIR (the last shapes, NAME_LEVEL_package.off and ..._cgal.off)]\n"
+               "       [--cgal-data FILE.tsv (CGAL ARAP's curve read from an earlier run's --data, not run again)]\n";
 }
 
 Options parse_options(int argc, char** argv)
@@ -84,11 +90,15 @@ Options parse_options(int argc, char** argv)
       o.keep_volume = true;
     else if(a == "--mesh-output")
       o.mesh_output = value();
+    else if(a == "--cgal-data")
+      o.cgal_data = value();
     else
       throw std::runtime_error("unknown option " + a);
   }
   if(o.output.empty())
     throw std::runtime_error("--output is required");
+  if(!o.cgal_data.empty() && !o.mesh_output.empty())
+    throw std::runtime_error("--mesh-output needs CGAL ARAP's last shape: not with --cgal-data");
   return o;
 }
 
@@ -199,6 +209,42 @@ Curve run_cgal(const Deformation_case& c, const Case_geometry& g, const Options&
   return curve;
 }
 
+// CGAL ARAP's curve on `vertices` vertices from a file that --data wrote:
+// the long runs of CGAL ARAP (an hour and more at 416k) need not be repeated
+// to measure a change of the package.
+Curve read_cgal_curve(const std::string& file, std::size_t vertices)
+{
+  std::ifstream in(file);
+  if(!in)
+    throw std::runtime_error("cannot read " + file);
+  Curve curve;
+  curve.name = "CGAL ARAP";
+  std::string line;
+  std::getline(in, line); // header
+  while(std::getline(in, line))
+  {
+    std::stringstream fields(line);
+    std::string n, method, iterations, seconds, energy, volume_change, folded_pairs;
+    if(!std::getline(fields, n, '\t') || !std::getline(fields, method, '\t') ||
+       !std::getline(fields, iterations, '\t') || !std::getline(fields, seconds, '\t') ||
+       !std::getline(fields, energy, '\t') || !std::getline(fields, volume_change, '\t') ||
+       !std::getline(fields, folded_pairs, '\t'))
+      throw std::runtime_error(file + ": a line without the seven columns of --data");
+    if(method != curve.name || std::stoul(n) != vertices)
+      continue;
+    Point_on_curve p;
+    p.iterations = static_cast<unsigned int>(std::stoul(iterations));
+    p.seconds = std::stod(seconds);
+    p.quality.arap_energy = std::stod(energy);
+    p.quality.volume_change = std::stod(volume_change);
+    p.quality.folded_pairs = static_cast<std::size_t>(std::stoul(folded_pairs));
+    curve.points.push_back(p);
+  }
+  if(curve.points.empty())
+    throw std::runtime_error(file + " has no curve of CGAL ARAP on " + std::to_string(vertices) + " vertices");
+  return curve;
+}
+
 double lowest_energy(const Curve& curve)
 {
   double lowest = std::numeric_limits<double>::infinity();
@@ -244,7 +290,10 @@ int main(int argc, char** argv)
          << " (`deform()`, then `refine()` in chunks), CGAL ARAP with `ORIGINAL_ARAP` and CHOLMOD on its SPD "
             "block from the rest pose (`deform(k, 0)` in chunks). Seconds from the constructor, measurements "
             "excluded. Energy: ARAP energy of the whole mesh against the rest shape (absolute cotangent "
-            "weights, scale-free). Build: "
+            "weights, scale-free)"
+         << (o.cgal_data.empty() ? std::string()
+                                 : ". CGAL ARAP's curves read from `" + o.cgal_data + "`, an earlier run of this program")
+         << ". Build: "
          << SSMD_BENCHMARK_BUILD_TYPE << ", `" << SSMD_BENCHMARK_CXX_FLAGS_BUILD_TYPE << " "
          << SSMD_BENCHMARK_CXX_FLAGS << "`.\n";
   try
@@ -257,7 +306,7 @@ int main(int argc, char** argv)
       const std::size_t n = num_vertices(c.mesh);
       std::cerr << c.name << " @" << level << ": " << n << " vertices\n";
       const Curve package = run_package(c, g, o);
-      const Curve cgal = run_cgal(c, g, o);
+      const Curve cgal = o.cgal_data.empty() ? run_cgal(c, g, o) : read_cgal_curve(o.cgal_data, n);
       const double converged = lowest_energy(cgal);
       if(!o.mesh_output.empty())
       {
