@@ -178,6 +178,54 @@ TEST_CASE("Refinement: the energy never rises, matches an independent evaluation
   }
 }
 
+TEST_CASE("Refinement: in steps, the same iterates as in one call; a change in between starts afresh", "[refine]")
+{
+  // The extrapolation's history goes on from one refine() to the next when
+  // the mesh and the constraints are where the last one left them, so that
+  // 7 + 13 iterations are the 20 of one call. Without that history the
+  // eighth iteration would be a plain step and the shapes would differ.
+  Surface_mesh split_mesh = to_mesh<Surface_mesh>(bar(24, 3));
+  Surface_mesh whole_mesh = split_mesh;
+  CGAL::Spectral_surface_mesh_deformation<Surface_mesh> split(split_mesh), whole(whole_mesh);
+  set_up_bar(split, split_mesh, bend, bend_center);
+  set_up_bar(whole, whole_mesh, bend, bend_center);
+  for(auto* d : {&split, &whole})
+  {
+    d->set_number_of_frequencies(40);
+    d->deform(10, 0.0);
+    REQUIRE(d->deform_report().success);
+  }
+  REQUIRE(split.refine(7, 0.0));
+  const std::vector<double> first_energies = split.refine_report().energies;
+  REQUIRE(split.refine(13, 0.0));
+  std::vector<double> split_energies = first_energies;
+  split_energies.insert(split_energies.end(), split.refine_report().energies.begin() + 1,
+                        split.refine_report().energies.end());
+  REQUIRE(whole.refine(20, 0.0));
+  const std::vector<double>& whole_energies = whole.refine_report().energies;
+  REQUIRE(split_energies.size() == whole_energies.size());
+  for(std::size_t k = 0; k < whole_energies.size(); ++k)
+    CHECK(split_energies[k] == Approx(whole_energies[k]).epsilon(1e-12));
+  const double diagonal = diagonal_of(positions_of(whole_mesh));
+  CHECK((positions_of(split_mesh) - positions_of(whole_mesh)).rowwise().norm().maxCoeff() < 1e-12 * diagonal);
+
+  // A shape moved in between (deform() again, which goes on from its own
+  // iteration) starts without history, as a deformation object that never
+  // refined does.
+  Surface_mesh fresh_mesh = to_mesh<Surface_mesh>(bar(24, 3));
+  CGAL::Spectral_surface_mesh_deformation<Surface_mesh> fresh(fresh_mesh);
+  set_up_bar(fresh, fresh_mesh, bend, bend_center);
+  fresh.set_number_of_frequencies(40);
+  fresh.deform(10, 0.0);
+  for(auto* d : {&split, &fresh})
+  {
+    d->deform(10, 0.0);
+    REQUIRE(d->deform_report().success);
+    REQUIRE(d->refine(3, 0.0));
+  }
+  CHECK((positions_of(split_mesh) - positions_of(fresh_mesh)).rowwise().norm().maxCoeff() < 1e-12 * diagonal);
+}
+
 TEST_CASE("Refinement: from the rest shape, a rigid motion of every constraint gives the rigid image", "[refine]")
 {
   Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(2));
