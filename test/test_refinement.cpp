@@ -178,7 +178,7 @@ TEST_CASE("Refinement: the energy never rises, matches an independent evaluation
   }
 }
 
-TEST_CASE("Refinement: in steps, the same iterates as in one call; a change in between starts afresh", "[refine]")
+TEST_CASE("Refinement: refine() in steps gives the iterates of one call and starts afresh after a change", "[refine]")
 {
   // The extrapolation's history goes on from one refine() to the next when
   // the mesh and the constraints are where the last one left them, so that
