@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -292,7 +293,9 @@ int main(int argc, char** argv)
             "excluded. Energy: ARAP energy of the whole mesh against the rest shape (absolute cotangent "
             "weights, scale-free)"
          << (o.cgal_data.empty() ? std::string()
-                                 : ". CGAL ARAP's curves read from `" + o.cgal_data + "`, an earlier run of this program")
+                                 : ". CGAL ARAP's curves read from `" +
+                                       std::filesystem::path(o.cgal_data).filename().string() +
+                                       "`, written by an earlier run of this program")
          << ". Build: "
          << SSMD_BENCHMARK_BUILD_TYPE << ", `" << SSMD_BENCHMARK_CXX_FLAGS_BUILD_TYPE << " "
          << SSMD_BENCHMARK_CXX_FLAGS << "`.\n";
