@@ -4,13 +4,11 @@
 // its value checked against an independent evaluation, the rigid motion
 // found from the rest shape, a converged state kept, the same optimum from
 // the spectral and the spatial results and under both constraint policies,
-// the volume kept on demand, and failures that leave the mesh unchanged;
-// the extrapolation that accelerates it.
+// the volume kept on demand, and failures that leave the mesh unchanged.
 #include "test_meshes.h"
 
 #include <CGAL/Spectral_surface_mesh_deformation.h>
 #include <CGAL/Spectral_deformation/arap_energy.h>
-#include <CGAL/Spectral_deformation/internal/Linear_algebra/Anderson_acceleration.h>
 #include <CGAL/Surface_mesh_deformation.h>
 
 #include <catch2/catch.hpp>
@@ -84,55 +82,6 @@ const Eigen::Vector3d bend_center(0, 0, 5.0);
 
 } // namespace
 
-TEST_CASE("Anderson acceleration: a linear contraction solved in a few steps, entries equal in every image kept exactly",
-          "[refine]")
-{
-  // x <- G(x) with the first row turned and shrunk by 0.95 about a fixed
-  // point, the second row always the same (a prescribed vertex). The plain
-  // iteration gains a factor 0.95 per step; extrapolating from as many
-  // differences as there are unknowns (3) solves a linear problem in a few
-  // steps, as GMRES would.
-  typedef internal::Mesh::Positions Positions;
-  const Eigen::Matrix3d contraction =
-      0.95 * Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, -2, 2).normalized()).toRotationMatrix();
-  const Eigen::RowVector3d fixed_point(0.3, -1.1, 2.0), prescribed(0.1, 1.0 / 3.0, -0.7);
-  const auto G = [&](const Positions& x) {
-    Positions image(2, 3);
-    image.row(0) = (x.row(0) - fixed_point) * contraction.transpose() + fixed_point;
-    image.row(1) = prescribed;
-    return image;
-  };
-  Positions start(2, 3);
-  start << 4.0, 0.5, -3.0, 0.1, 1.0 / 3.0, -0.7;
-
-  Positions plain = start;
-  for(int k = 0; k < 12; ++k)
-    plain = G(plain);
-  CHECK((plain.row(0) - fixed_point).norm() > 0.3 * (start.row(0) - fixed_point).norm());
-
-  internal::Linear_algebra::Anderson_acceleration<Positions> anderson(5);
-  Positions x = start, accelerated;
-  bool extrapolated_once = false;
-  for(int k = 0; k < 12; ++k)
-  {
-    const Positions image = G(x);
-    if(anderson.extrapolate(x, image, accelerated))
-    {
-      extrapolated_once = true;
-      CHECK(accelerated.row(1) == prescribed);
-      x = accelerated;
-    }
-    else
-      x = image;
-  }
-  CHECK(extrapolated_once);
-  CHECK((x.row(0) - fixed_point).norm() < 1e-9 * (start.row(0) - fixed_point).norm());
-
-  // After reset() the next call has nothing to extrapolate from.
-  anderson.reset();
-  CHECK_FALSE(anderson.extrapolate(x, G(x), accelerated));
-}
-
 TEST_CASE("Refinement: the energy never rises, matches an independent evaluation, and the handles stay on target",
           "[refine]")
 {
@@ -176,54 +125,6 @@ TEST_CASE("Refinement: the energy never rises, matches an independent evaluation
       if(rest.point(v).z() < 0.3)
         CHECK(mesh.point(v) == rest.point(v));
   }
-}
-
-TEST_CASE("Refinement: refine() in steps gives the iterates of one call and starts afresh after a change", "[refine]")
-{
-  // The extrapolation's history goes on from one refine() to the next when
-  // the mesh and the constraints are where the last one left them, so that
-  // 7 + 13 iterations are the 20 of one call. Without that history the
-  // eighth iteration would be a plain step and the shapes would differ.
-  Surface_mesh split_mesh = to_mesh<Surface_mesh>(bar(24, 3));
-  Surface_mesh whole_mesh = split_mesh;
-  CGAL::Spectral_surface_mesh_deformation<Surface_mesh> split(split_mesh), whole(whole_mesh);
-  set_up_bar(split, split_mesh, bend, bend_center);
-  set_up_bar(whole, whole_mesh, bend, bend_center);
-  for(auto* d : {&split, &whole})
-  {
-    d->set_number_of_frequencies(40);
-    d->deform(10, 0.0);
-    REQUIRE(d->deform_report().success);
-  }
-  REQUIRE(split.refine(7, 0.0));
-  const std::vector<double> first_energies = split.refine_report().energies;
-  REQUIRE(split.refine(13, 0.0));
-  std::vector<double> split_energies = first_energies;
-  split_energies.insert(split_energies.end(), split.refine_report().energies.begin() + 1,
-                        split.refine_report().energies.end());
-  REQUIRE(whole.refine(20, 0.0));
-  const std::vector<double>& whole_energies = whole.refine_report().energies;
-  REQUIRE(split_energies.size() == whole_energies.size());
-  for(std::size_t k = 0; k < whole_energies.size(); ++k)
-    CHECK(split_energies[k] == Approx(whole_energies[k]).epsilon(1e-12));
-  const double diagonal = diagonal_of(positions_of(whole_mesh));
-  CHECK((positions_of(split_mesh) - positions_of(whole_mesh)).rowwise().norm().maxCoeff() < 1e-12 * diagonal);
-
-  // A shape moved in between (deform() again, which goes on from its own
-  // iteration) starts without history, as a deformation object that never
-  // refined does.
-  Surface_mesh fresh_mesh = to_mesh<Surface_mesh>(bar(24, 3));
-  CGAL::Spectral_surface_mesh_deformation<Surface_mesh> fresh(fresh_mesh);
-  set_up_bar(fresh, fresh_mesh, bend, bend_center);
-  fresh.set_number_of_frequencies(40);
-  fresh.deform(10, 0.0);
-  for(auto* d : {&split, &fresh})
-  {
-    d->deform(10, 0.0);
-    REQUIRE(d->deform_report().success);
-    REQUIRE(d->refine(3, 0.0));
-  }
-  CHECK((positions_of(split_mesh) - positions_of(fresh_mesh)).rowwise().norm().maxCoeff() < 1e-12 * diagonal);
 }
 
 TEST_CASE("Refinement: from the rest shape, a rigid motion of every constraint gives the rigid image", "[refine]")

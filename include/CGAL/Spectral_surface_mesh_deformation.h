@@ -301,14 +301,9 @@ public:
   /// cotangent Laplacian, its negative weights clamped at 0 as in CGAL: with
   /// `EXACT_CONSTRAINTS` and no negative weight the one `preprocess()` made
   /// for the detail transfer; otherwise the first `refine()` of a constraint
-  /// set makes it. Each iteration also extrapolates from the last five
-  /// (Anderson acceleration) and keeps the extrapolated shape when its
-  /// energy is the lower: the energy falls at every iteration, and reaches
-  /// the optimum in several times fewer iterations than the plain
-  /// iteration. With `set_volume_preservation()`, each
+  /// set makes it. With `set_volume_preservation()`, each
   /// iteration keeps the enclosed volume (as-rigid-as-possible deformation
-  /// alone lets a twisted tube collapse as its energy falls), without the
-  /// extrapolation, which does not keep it.
+  /// alone lets a twisted tube collapse as its energy falls).
   ///
   /// Runs at most `max_iterations` iterations; stops earlier when one lowers
   /// the energy by less than `tolerance` times its value. Returns whether the

@@ -16,7 +16,6 @@
 #include <CGAL/Spectral_deformation/internal/Deformation/Iteration_report.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Smooth_rotation_field.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/rigid_fit.h>
-#include <CGAL/Spectral_deformation/internal/Linear_algebra/Anderson_acceleration.h>
 #include <CGAL/Spectral_deformation/internal/Mesh/Region.h>
 
 #include <Eigen/Core>
@@ -186,17 +185,9 @@ inline void place_constrained(const Constraint_set& set, const Positions& target
 /// `tolerance` times its value. Fills the iterations, energies, times and
 /// convergence of `report`; throws `Spectral_deformation_error` when a solve
 /// fails or gives non-finite positions (`positions` is then unspecified).
-///
-/// With `anderson` (not null) each iteration also extrapolates from the
-/// last iterates (`Linear_algebra::Anderson_acceleration`, whose history
-/// `positions` must continue or which must have been reset) and keeps the
-/// extrapolated positions when their energy is below the current one, else
-/// the plain step's, whose energy is never above it: the energy still falls
-/// at every iteration, and the prescribed vertices stay on their places.
 template <class GlobalSolve>
 void refine_as_rigid_as_possible(Arap_local_step& local, const GlobalSolve& solve, Positions& positions,
-                                 unsigned int max_iterations, double tolerance, Spectral_refinement_report& report,
-                                 Linear_algebra::Anderson_acceleration<Positions>* anderson = nullptr)
+                                 unsigned int max_iterations, double tolerance, Spectral_refinement_report& report)
 {
   typedef Spectral_deformation_error Error;
   const auto start = std::chrono::steady_clock::now();
@@ -206,30 +197,14 @@ void refine_as_rigid_as_possible(Arap_local_step& local, const GlobalSolve& solv
   report.seconds_at_iteration.assign(1, seconds_since(start));
   report.iterations = 0;
   report.converged = !(energy > 0); // a rigid motion of the rest shape stays where it is
-  Positions image, accelerated;
+  Positions next;
   while(!report.converged && report.iterations < max_iterations)
   {
-    if(!solve(local.right_hand_side(), image) || !image.allFinite())
+    if(!solve(local.right_hand_side(), next) || !next.allFinite())
       throw Error(Error::SOLVER_FAILURE, "the refinement's solve produced non-finite positions");
+    positions.swap(next);
     const double previous = energy;
-    bool extrapolated = false;
-    if(anderson != nullptr && anderson->extrapolate(positions, image, accelerated) && accelerated.allFinite())
-    {
-      const double candidate = local.fit(accelerated);
-      extrapolated = candidate < previous;
-      if(extrapolated)
-      {
-        positions.swap(accelerated);
-        energy = candidate;
-      }
-      else
-        anderson->reset();
-    }
-    if(!extrapolated)
-    {
-      positions.swap(image);
-      energy = local.fit(positions);
-    }
+    energy = local.fit(positions);
     ++report.iterations;
     report.energies.push_back(energy);
     report.seconds_at_iteration.push_back(seconds_since(start));
@@ -252,12 +227,6 @@ class Arap_refinement
 public:
   typedef Detail_transfer<SparseSPDSolverTraits> System;
 
-  /// The iterates the extrapolation of `refine_as_rigid_as_possible()`
-  /// combines.
-  static constexpr Eigen::Index acceleration_history = 5;
-
-  Arap_refinement() : m_anderson(acceleration_history) {}
-
   /// For the region `region`; `shared`, when not null, a detail transfer set
   /// on the region's cotangent stiffness whose factorization may be reused
   /// (it must outlive this object).
@@ -266,7 +235,6 @@ public:
     bool clamped = false;
     Eigen::SparseMatrix<double> weights = acute_cotangent_stiffness(region.arrays, clamped);
     m_local_step.initialize(weights, region.arrays.positions);
-    m_has_last = false;
     m_own.reset();
     m_shared = nullptr;
     if(clamped || shared == nullptr)
@@ -296,30 +264,14 @@ public:
     if(!system.prepare_dirichlet(prescribed_flags(region, set)))
       throw Error(Error::SOLVER_FAILURE, "the factorization of the refinement's system failed");
     report.factorization_seconds = seconds_since(start);
-    // A call that takes up where the last one ended, with the same
-    // constraints, goes on with its extrapolation history, so that
-    // refinements in small steps (the viewer's) converge as one long one.
-    const bool continues = m_has_last && positions.rows() == m_last_result.rows() &&
-                           positions == m_last_result && set.constrained == m_last_constrained &&
-                           targets.rows() == m_last_targets.rows() && targets == m_last_targets && system.preserves_volume() == m_last_preserved_volume;
-    m_has_last = false;
-    if(!continues)
-      m_anderson.reset();
     place_constrained(set, targets, m_prescribed, positions);
-    // The extrapolation combines shapes linearly, which does not keep
-    // their volume: the volume-keeping refinement takes plain steps.
     refine_as_rigid_as_possible(
         m_local_step,
         [this, &system](const Eigen::MatrixXd& rhs, Positions& out) {
           return system.solve_dirichlet(rhs, m_prescribed, out);
         },
-        positions, max_iterations, tolerance, report, system.preserves_volume() ? nullptr : &m_anderson);
+        positions, max_iterations, tolerance, report);
     report.volume_preserved = system.preserves_volume();
-    m_last_result = positions;
-    m_last_constrained = set.constrained;
-    m_last_targets = targets;
-    m_last_preserved_volume = system.preserves_volume();
-    m_has_last = true;
   }
 
 private:
@@ -327,13 +279,6 @@ private:
   std::unique_ptr<System> m_own;
   System* m_shared = nullptr;
   Positions m_prescribed;
-  Linear_algebra::Anderson_acceleration<Positions> m_anderson;
-  // Where the last refine() ended and with which constraints.
-  bool m_has_last = false;
-  Positions m_last_result;
-  std::vector<int> m_last_constrained;
-  Positions m_last_targets;
-  bool m_last_preserved_volume = false;
 };
 
 } // namespace Deformation
