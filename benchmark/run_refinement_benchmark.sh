@@ -40,8 +40,10 @@ for level in ${LEVELS:-0 1}; do
   data="${results}/refinement_arm_${sizes[level]}.tsv"
   reuse=()
   if [ "${REUSE_CGAL:-0}" = 1 ] && [ -f "${data}" ]; then
-    cp "${data}" "${work}/$(basename "${data}")"
-    reuse=(--cgal-data "${work}/$(basename "${data}")")
+    # A copy: the run writes its --data over the file it would read.
+    earlier="${work}/$(basename "${data}")"
+    cp "${data}" "${earlier}"
+    reuse=(--cgal-data "${earlier}")
   fi
   "${program}" --levels "${level}" --cgal-iterations "${cgal_iterations[level]}" \
     --package-iterations "${package_iterations[level]}" --meshes "${meshes}" "${reuse[@]}" \
