@@ -116,7 +116,11 @@ public:
   // CHOLMOD runs out of memory its analysis returns no factor and an
   // interrupted factorization leaves a status below CHOLMOD_OK: both are
   // failures, as is a matrix that is not positive definite.
-  bool compute(const Matrix& A, std::vector<int>* ordering = nullptr)
+  bool compute(const Matrix& A, std::vector<int>* ordering = nullptr) { return analyze(A, ordering) && factorize(A); }
+
+  // The first half of compute(): the symbolic analysis, which also decides
+  // whether the factor is supernodal (factor()->is_super).
+  bool analyze(const Matrix& A, std::vector<int>* ordering = nullptr)
   {
     m_common.status = CHOLMOD_OK;
     cholmod_sparse a = lower_triangle_view(A);
@@ -128,8 +132,14 @@ public:
       m_common.status = CHOLMOD_OK;
       m_factor = analyze_serialized(a);
     }
-    if(m_factor == nullptr || m_common.status < CHOLMOD_OK)
-      return false;
+    return m_factor != nullptr && m_common.status >= CHOLMOD_OK;
+  }
+
+  // The second half of compute(): the numerical factorization of A, whose
+  // pattern analyze() was given.
+  bool factorize(const Matrix& A)
+  {
+    cholmod_sparse a = lower_triangle_view(A);
     double no_shift[2] = {0, 0};
     cholmod_factorize_p(&a, no_shift, nullptr, 0, m_factor, &m_common);
     return m_factor->minor == m_factor->n && m_common.status >= CHOLMOD_OK;
