@@ -122,20 +122,29 @@ TEST_CASE("sphere spectrum: l(l+1)/R^2 with multiplicities 2l+1", "[basis]")
 
 TEST_CASE("basis is M-orthonormal and solves the generalized problem", "[basis]")
 {
+  // The default solver (block Lanczos on this bar, to its relative residual
+  // tolerance of 1e-6) and the dense one (exact).
   const Surface_mesh mesh = to_mesh<Surface_mesh>(bar(30, 4));
+  REQUIRE(std::ptrdiff_t(num_vertices(mesh)) > CGAL::Block_lanczos_eigensolver_traits<>().dense_threshold());
   const Basis basis(mesh, 40);
+  const Basis dense_basis(mesh, 40, CGAL::parameters::default_values(),
+                          CGAL::Block_lanczos_eigensolver_traits<>(1e-6, 0, 0, 100000));
   const Eigen::MatrixXd& H = basis.basis();
   const Eigen::VectorXd& mass = basis.mass();
   const Eigen::MatrixXd gram = H.transpose() * mass.asDiagonal() * H;
   CHECK((gram - Eigen::MatrixXd::Identity(40, 40)).cwiseAbs().maxCoeff() < 1e-9);
 
   const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
-  for(Eigen::Index k = 0; k < 40; ++k)
+  for(const Basis* computed : {&basis, &dense_basis})
   {
-    const Eigen::VectorXd Mh = mass.cwiseProduct(H.col(k));
-    const Eigen::VectorXd residual = Q * H.col(k) - basis.eigenvalues()[k] * Mh;
-    INFO("eigenpair " << k);
-    CHECK(residual.norm() < 1e-7 * (1.0 + basis.eigenvalues()[k]) * Mh.norm());
+    const double tolerance = computed == &basis ? 1e-5 : 1e-7;
+    for(Eigen::Index k = 0; k < 40; ++k)
+    {
+      const Eigen::VectorXd Mh = mass.cwiseProduct(computed->basis().col(k));
+      const Eigen::VectorXd residual = Q * computed->basis().col(k) - computed->eigenvalues()[k] * Mh;
+      INFO((computed == &basis ? "default" : "dense") << " solver, eigenpair " << k);
+      CHECK(residual.norm() < tolerance * (1.0 + computed->eigenvalues()[k]) * Mh.norm());
+    }
   }
   // Deterministic signs: the entry of largest magnitude is positive.
   for(Eigen::Index k = 0; k < 40; ++k)
@@ -257,6 +266,38 @@ TEST_CASE("block Lanczos, Spectra and the dense solver agree", "[basis][block_la
   CGAL::Spectra_eigensolver_traits<> spectra(1000, 1e-10, 0);
   REQUIRE(spectra.compute(Q, mass, m, spectra_values, spectra_vectors));
   CHECK((spectra_values - block_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
+}
+
+TEST_CASE("block Lanczos by default from a few hundred vertices, clusters included", "[basis][block_lanczos]")
+{
+  // 642 vertices, above the default dense threshold and with 8 m below n:
+  // the default traits run the block method, and find the sphere's clusters
+  // of 2l + 1 eigenvalues as the dense solver does.
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(3, 1.0));
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
+  const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(mesh).diagonal();
+  REQUIRE(Q.rows() == 642);
+  CGAL::Block_lanczos_eigensolver_traits<> defaults;
+  REQUIRE(Q.rows() > defaults.dense_threshold());
+  for(Eigen::Index m : {Eigen::Index(10), Eigen::Index(40)})
+  {
+    INFO("m = " << m);
+    Eigen::VectorXd dense_values, values;
+    Eigen::MatrixXd dense_vectors, vectors;
+    std::string message;
+    REQUIRE(CGAL::Spectral_deformation::internal::Eigensolvers::dense_generalized_eigenpairs(
+        Q, mass, m, dense_values, dense_vectors, message));
+    bool dense_reported = false;
+    defaults.set_progress_callback([&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) {
+      dense_reported = dense_reported || p.stage == p.DENSE_SOLVE || p.stage == p.REFERENCE_SOLVE;
+    });
+    REQUIRE(defaults.compute(Q, mass, m, values, vectors));
+    CHECK_FALSE(dense_reported);
+    CHECK((values - dense_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
+    // Whole clusters: l <= 2 (9 functions) for m = 10, l <= 5 (36) for m = 40.
+    const Eigen::Index clusters = m == 10 ? 9 : 36;
+    CHECK(subspace_distance(dense_vectors.leftCols(clusters), vectors.leftCols(clusters), mass) < 1e-6);
+  }
 }
 
 TEST_CASE("block Lanczos: several components, small problems and bad arguments",

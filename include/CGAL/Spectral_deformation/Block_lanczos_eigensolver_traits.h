@@ -114,9 +114,12 @@ namespace CGAL {
 /// default; `set_reference_threshold()` hands meshes below a size to the
 /// reference solver instead.
 ///
-/// Small problems (at most `dense_threshold()` vertices) and problems whose
-/// subspace would not be much smaller than `n` are solved with a dense
-/// solver instead, which is exact and faster at that size.
+/// Small problems (at most `dense_threshold()` vertices, 300 by default) and
+/// problems whose subspace would not be much smaller than `n` (`8 m > n`)
+/// are solved with a dense solver instead, which is exact and faster there.
+/// From 400 vertices on, wherever the block method can run, it was measured
+/// faster than the dense solver (one thread, `m` = 10 to 100): 900 vertices
+/// and `m` = 100 in 55 ms instead of 92 ms, `m` = 10 in 10 ms instead of 64 ms.
 ///
 /// \tparam SparseSPDSolverTraits a model of `SparseSPDSolverTraits`, used to
 ///         factor `Q - sigma M`; its `solve()` receives `block_size()`
@@ -161,7 +164,7 @@ public:
   /// and the size at or below which the dense solver is used.
   explicit Block_lanczos_eigensolver_traits(double tolerance = 1e-6, Eigen::Index block_size = 0,
                                             Eigen::Index maximum_subspace_dimension = 0,
-                                            Eigen::Index dense_threshold = 1000)
+                                            Eigen::Index dense_threshold = 300)
     : m_tolerance(tolerance), m_block_size(block_size),
       m_maximum_subspace_dimension(maximum_subspace_dimension), m_dense_threshold(dense_threshold)
   {}
