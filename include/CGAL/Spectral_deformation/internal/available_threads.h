@@ -11,7 +11,9 @@
 #include <omp.h>
 #endif
 
+#include <atomic>
 #include <cstddef>
+#include <exception>
 
 namespace CGAL {
 namespace Spectral_deformation {
@@ -92,6 +94,43 @@ public:
 private:
   int m_threads = 0;
 };
+
+#ifdef _OPENMP
+/// Runs `work()` on the first thread of a team of two OpenMP threads and
+/// `beside(done)` on the second, `done` (a `const std::atomic<bool>&`)
+/// turning true once `work()` has returned; an exception of `work()` is
+/// thrown again once the team has ended. Inside the team, the OpenMP loops
+/// of `work()` are nested: they run on its thread alone when nested
+/// parallelism is off (OpenMP's default), whatever their own thread counts.
+/// Two is the smallest active team: with one thread, the loops of `work()`
+/// would form the active level instead.
+template <class Work, class Beside>
+void run_beside_a_second_thread(Work&& work, Beside&& beside)
+{
+  std::atomic<bool> done{false};
+  std::exception_ptr error;
+  constexpr int smallest_active_team = 2;
+#pragma omp parallel num_threads(smallest_active_team)
+  {
+    if(omp_get_thread_num() == 0)
+    {
+      try
+      {
+        work();
+      }
+      catch(...)
+      {
+        error = std::current_exception();
+      }
+      done.store(true, std::memory_order_relaxed);
+    }
+    else
+      beside(static_cast<const std::atomic<bool>&>(done));
+  }
+  if(error)
+    std::rethrow_exception(error);
+}
+#endif
 
 } // namespace internal
 } // namespace Spectral_deformation

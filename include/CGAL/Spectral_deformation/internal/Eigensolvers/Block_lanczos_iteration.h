@@ -16,6 +16,7 @@
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Dense_products.h>
 #include <CGAL/Spectral_deformation/internal/Memory/Page_mapping.h>
 #include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
+#include <CGAL/Spectral_deformation/internal/available_threads.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -87,30 +88,11 @@ bool factor_while_mapping(SparseSPDSolverTraits& solver, const Eigen::SparseMatr
 #ifdef _OPENMP
   if(!omp_in_parallel() && omp_get_max_threads() >= 2)
   {
-    std::atomic<bool> factored{false};
     bool success = false;
-    std::exception_ptr error;
-    // One thread factors, the other maps.
-    constexpr int roles = 2;
-#pragma omp parallel num_threads(roles)
-    {
-      if(omp_get_thread_num() == 0)
-      {
-        try
-        {
-          success = solver.factor(shifted);
-        }
-        catch(...)
-        {
-          error = std::current_exception();
-        }
-        factored.store(true, std::memory_order_relaxed);
-      }
-      else
-        prefault_until(subspace, bytes, factored);
-    }
-    if(error)
-      std::rethrow_exception(error);
+    run_beside_a_second_thread([&] { success = solver.factor(shifted); },
+                               [&](const std::atomic<bool>& factored) {
+                                 prefault_until(subspace, bytes, factored);
+                               });
     return success;
   }
 #endif

@@ -110,28 +110,8 @@ public:
       // region took 3.2-11.7 ms with it, 2.4-2.7 ms without.
       if(m_solver.factor()->is_super && !omp_in_parallel() &&
          omp_get_num_procs() < CHOLMOD_OMP_NUM_THREADS && omp_get_max_active_levels() <= 1)
-      {
-        // A team of one thread would not be active, and CHOLMOD's loops
-        // would then form the active level; two is the smallest active team.
-        constexpr int smallest_active_team = 2;
-        std::exception_ptr error;
-#pragma omp parallel num_threads(smallest_active_team)
-        {
-          if(omp_get_thread_num() == 0)
-          {
-            try
-            {
-              computed = m_solver.factorize(A);
-            }
-            catch(...)
-            {
-              error = std::current_exception();
-            }
-          }
-        }
-        if(error)
-          std::rethrow_exception(error);
-      }
+        run_beside_a_second_thread([&] { computed = m_solver.factorize(A); },
+                                   [](const std::atomic<bool>&) {});
       else
 #endif
         computed = m_solver.factorize(A);
