@@ -6,6 +6,7 @@
 #include <CGAL/Manifold_harmonics_basis.h>
 #include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Eigenvalue_count.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Dirichlet_system.h>
 
 #include <catch2/catch.hpp>
@@ -122,8 +123,9 @@ TEST_CASE("sphere spectrum: l(l+1)/R^2 with multiplicities 2l+1", "[basis]")
 
 TEST_CASE("basis is M-orthonormal and solves the generalized problem", "[basis]")
 {
-  // The default solver (block Lanczos on this bar, to its relative residual
-  // tolerance of 1e-6) and the dense one (exact).
+  // The default solver (on this bar of a few hundred vertices the
+  // single-vector method, checked, to its tolerance of 1e-6) and the dense
+  // one (exact).
   const Surface_mesh mesh = to_mesh<Surface_mesh>(bar(30, 4));
   REQUIRE(std::ptrdiff_t(num_vertices(mesh)) > CGAL::Block_lanczos_eigensolver_traits<>().dense_threshold());
   const Basis basis(mesh, 40);
@@ -232,6 +234,7 @@ TEST_CASE("block Lanczos, Spectra and the dense solver agree", "[basis][block_la
   {
     INFO("block size " << block_size);
     CGAL::Block_lanczos_eigensolver_traits<> block(1e-10, block_size, 12 * m, 0);
+    block.set_checked_single_vector(false);
     block.set_reference_fallback(false);
     block.set_reference_threshold(0);
     std::vector<int> stages;
@@ -268,36 +271,102 @@ TEST_CASE("block Lanczos, Spectra and the dense solver agree", "[basis][block_la
   CHECK((spectra_values - block_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
 }
 
-TEST_CASE("block Lanczos by default from a few hundred vertices, clusters included", "[basis][block_lanczos]")
+TEST_CASE("small problems: the single-vector method checked by an eigenvalue count, clusters included",
+          "[basis][block_lanczos]")
 {
-  // 642 vertices, above the default dense threshold and with 8 m below n:
-  // the default traits run the block method, and find the sphere's clusters
-  // of 2l + 1 eigenvalues as the dense solver does.
+  // 642 vertices, above the default dense threshold: the default traits run
+  // Spectra's single-vector Lanczos and count the eigenvalues below the
+  // largest one it found. The sphere's eigenvalues come in clusters of 2l + 1
+  // (split a little by the icosahedral symmetry), whose copies the single
+  // vector method can miss: whatever it returns, the result must be the
+  // dense solver's.
   const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(3, 1.0));
   const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
   const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(mesh).diagonal();
   REQUIRE(Q.rows() == 642);
-  CGAL::Block_lanczos_eigensolver_traits<> defaults;
-  REQUIRE(Q.rows() > defaults.dense_threshold());
-  for(Eigen::Index m : {Eigen::Index(10), Eigen::Index(40)})
+  namespace Eigensolvers = CGAL::Spectral_deformation::internal::Eigensolvers;
+  for(Eigen::Index m : {Eigen::Index(10), Eigen::Index(40), Eigen::Index(100)})
   {
     INFO("m = " << m);
+    CGAL::Block_lanczos_eigensolver_traits<> defaults;
+    REQUIRE(defaults.uses_checked_single_vector(Q.rows(), m));
     Eigen::VectorXd dense_values, values;
     Eigen::MatrixXd dense_vectors, vectors;
     std::string message;
-    REQUIRE(CGAL::Spectral_deformation::internal::Eigensolvers::dense_generalized_eigenpairs(
-        Q, mass, m, dense_values, dense_vectors, message));
-    bool dense_reported = false;
+    REQUIRE(Eigensolvers::dense_generalized_eigenpairs(Q, mass, m, dense_values, dense_vectors, message));
+    bool reference_reported = false;
     defaults.set_progress_callback([&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) {
-      dense_reported = dense_reported || p.stage == p.DENSE_SOLVE || p.stage == p.REFERENCE_SOLVE;
+      reference_reported = reference_reported || p.stage == p.REFERENCE_SOLVE;
     });
     REQUIRE(defaults.compute(Q, mass, m, values, vectors));
-    CHECK_FALSE(dense_reported);
+    CHECK(reference_reported);
     CHECK((values - dense_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
-    // Whole clusters: l <= 2 (9 functions) for m = 10, l <= 5 (36) for m = 40.
-    const Eigen::Index clusters = m == 10 ? 9 : 36;
+    // Whole clusters: l <= 2 (9 functions) for m = 10, l <= 5 (36) for
+    // m = 40, l <= 8 (81) for m = 100.
+    const Eigen::Index clusters = m == 10 ? 9 : m == 40 ? 36 : 81;
     CHECK(subspace_distance(dense_vectors.leftCols(clusters), vectors.leftCols(clusters), mass) < 1e-6);
+    const Eigen::MatrixXd gram = vectors.transpose() * mass.asDiagonal() * vectors;
+    CHECK((gram - Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff() < 1e-10);
   }
+
+  // Disabled, the block method runs from 8 m <= n on.
+  CGAL::Block_lanczos_eigensolver_traits<> block_only;
+  block_only.set_checked_single_vector(false);
+  bool other_reported = false;
+  block_only.set_progress_callback([&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) {
+    other_reported = other_reported || p.stage == p.DENSE_SOLVE || p.stage == p.REFERENCE_SOLVE;
+  });
+  Eigen::VectorXd values;
+  Eigen::MatrixXd vectors;
+  REQUIRE(block_only.compute(Q, mass, 40, values, vectors));
+  CHECK_FALSE(other_reported);
+
+  // Larger problems and more frequencies go to the block method.
+  CHECK_FALSE(block_only.uses_checked_single_vector(Q.rows(), 40));
+  CGAL::Block_lanczos_eigensolver_traits<> defaults;
+  CHECK_FALSE(defaults.uses_checked_single_vector(5001, 10));
+  CHECK_FALSE(defaults.uses_checked_single_vector(4100, 100));
+  CHECK(defaults.uses_checked_single_vector(3900, 100));
+  CHECK_FALSE(defaults.uses_checked_single_vector(642, 200));
+  CHECK_FALSE(defaults.uses_checked_single_vector(defaults.dense_threshold(), 10));
+}
+
+TEST_CASE("the eigenvalue count finds a missing copy, and accepts any copies of the largest eigenvalue",
+          "[basis][block_lanczos]")
+{
+  // Two unit spheres: the eigenvalue 0 twice, then the l = 1 eigenvalue
+  // (about 2) six times, then l = 2 ten times.
+  namespace Eigensolvers = CGAL::Spectral_deformation::internal::Eigensolvers;
+  const Surface_mesh spheres = to_mesh<Surface_mesh>(two_spheres(3));
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(spheres);
+  const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(spheres).diagonal();
+  Eigen::VectorXd values;
+  Eigen::MatrixXd vectors;
+  std::string message;
+  REQUIRE(Eigensolvers::dense_generalized_eigenpairs(Q, mass, 20, values, vectors, message));
+  REQUIRE(values(7) < 2.2);
+  REQUIRE(values(8) > 5.0);
+  // The count below a shift is the count of the exact spectrum.
+  CHECK(Eigensolvers::eigenvalues_below(Q, mass, 1.0) == 2);
+  CHECK(Eigensolvers::eigenvalues_below(Q, mass, 0.5 * (values(7) + values(8))) == 8);
+  CHECK(Eigensolvers::eigenvalues_below(Q, mass, 0.5 * (values(17) + values(18))) == 18);
+
+  // The smallest eigenvalues, complete.
+  CHECK(Eigensolvers::smallest_eigenvalues_complete(Q, mass, values.head(8)));
+  CHECK(Eigensolvers::smallest_eigenvalues_complete(Q, mass, values.head(18)));
+  // Four of the six copies of the cluster at the top: any of them will do.
+  CHECK(Eigensolvers::smallest_eigenvalues_complete(Q, mass, values.head(6)));
+  // A copy missing below the top: the l = 1 cluster given five times, then
+  // an l = 2 eigenvalue.
+  Eigen::VectorXd missing(9);
+  missing << values.head(7), values(8), values(9);
+  CHECK_FALSE(Eigensolvers::smallest_eigenvalues_complete(Q, mass, missing));
+  // One zero missing (one component's constant).
+  Eigen::VectorXd no_second_zero(7);
+  no_second_zero << values(0), values.segment(2, 6);
+  CHECK_FALSE(Eigensolvers::smallest_eigenvalues_complete(Q, mass, no_second_zero));
+  // Only zeros: no positive shift separates them, so no answer.
+  CHECK_FALSE(Eigensolvers::smallest_eigenvalues_complete(Q, mass, values.head(2)));
 }
 
 TEST_CASE("block Lanczos: several components, small problems and bad arguments",
@@ -314,6 +383,7 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
   REQUIRE(CGAL::Spectral_deformation::internal::Eigensolvers::dense_generalized_eigenpairs(
       Q, mass, 12, dense_values, dense_vectors, message));
   CGAL::Block_lanczos_eigensolver_traits<> block(1e-10, 4, 200, 0);
+  block.set_checked_single_vector(false);
   block.set_reference_fallback(false);
   block.set_reference_threshold(0);
   REQUIRE(block.compute(Q, mass, 12, values, vectors));
@@ -333,6 +403,7 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
 
   // Below reference_threshold() the reference solver runs.
   CGAL::Block_lanczos_eigensolver_traits<> delegating;
+  delegating.set_checked_single_vector(false);
   delegating.set_reference_threshold(10000);
   bool delegated = false;
   delegating.set_progress_callback(
@@ -346,6 +417,7 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
   // When a typical subspace (4 m columns) does not fit in the memory limit,
   // the reference solver runs directly.
   CGAL::Block_lanczos_eigensolver_traits<> frugal(1e-10, 4, 200, 0);
+  frugal.set_checked_single_vector(false);
   frugal.set_memory_limit(sizeof(double) * std::size_t(Q.rows()) * 40);
   bool frugal_delegated = false;
   frugal.set_progress_callback([&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) {
@@ -361,6 +433,7 @@ TEST_CASE("block Lanczos: several components, small problems and bad arguments",
   // With a subspace too small for the repeated eigenvalues the reference
   // solver takes over, and says so.
   CGAL::Block_lanczos_eigensolver_traits<> falling_back(1e-10, 4, 48, 0);
+  falling_back.set_checked_single_vector(false);
   falling_back.set_reference_threshold(0);
   bool reference_reported = false;
   falling_back.set_progress_callback(
@@ -441,6 +514,7 @@ TEST_CASE("block Lanczos: the constants of each component are deflated, only for
   CHECK((constants.transpose() * mass.asDiagonal() * x).cwiseAbs().maxCoeff() < 1e-13);
 
   CGAL::Block_lanczos_eigensolver_traits<> block(1e-10, 4, 200, 0);
+  block.set_checked_single_vector(false);
   block.set_reference_fallback(false);
   Eigen::VectorXd values;
   Eigen::MatrixXd vectors;
@@ -1110,6 +1184,7 @@ TEST_CASE("bad input gives a clear error", "[basis][errors]")
           }) == Error::SOLVER_FAILURE);
     // The block solver with a subspace too small to converge in.
     CGAL::Block_lanczos_eigensolver_traits<> cramped(1e-10, 8, 48, 0);
+    cramped.set_checked_single_vector(false);
     cramped.set_reference_fallback(false);
     cramped.set_reference_threshold(0);
     CHECK(error_code_of([&] { Basis(sphere, 40, CGAL::parameters::default_values(), cramped); }) ==

@@ -10,6 +10,7 @@
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_iteration.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_state.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Eigenvalue_count.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Spectra_lanczos.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/dense_eigenpairs.h>
 #include <CGAL/Spectral_deformation/internal/Traits_requirements.h>
@@ -23,6 +24,7 @@
 #include <cstddef>
 #include <exception>
 #include <functional>
+#include <new>
 #include <string>
 
 namespace CGAL {
@@ -110,16 +112,29 @@ namespace CGAL {
 /// faster, but it can miss copies of a repeated eigenvalue, which
 /// the block method finds up to the block size: on two unit spheres (1284
 /// vertices, m = 10) Spectra's solver returned five of the six copies of
-/// the eigenvalue 2. The block method is therefore used at every size by
-/// default; `set_reference_threshold()` hands meshes below a size to the
-/// reference solver instead.
+/// the eigenvalue 2, and on an icosphere of 642 vertices (m = 100) three
+/// copies of its clusters of `2l + 1`. The single-vector method is therefore
+/// used only where its result is checked (`uses_checked_single_vector()`,
+/// small problems): the number of eigenvalues below the largest one it
+/// found, counted by Sylvester's law of inertia on a sparse `L D Lᵀ`
+/// factorization of the shifted matrix (about 1 ms on 1,000 vertices), must
+/// be the number it found; copies of the largest eigenvalue may be any of
+/// them, as with a dense solver. When a copy is missing, `compute()` solves
+/// again with the block or the dense method. Measured on one thread (as the
+/// deformation prepares regions of fewer than 5,000 vertices), `m` = 100:
+/// 620 vertices in 28 ms instead of 46 ms (dense), 992 in 44 ms instead of
+/// 72 ms, 3,916 in 115-120 ms instead of 147-157 ms (block); `m` = 30 on
+/// 3,916 vertices in 19 ms instead of 55 ms. `set_reference_threshold()` hands
+/// larger meshes to the reference solver unchecked.
 ///
-/// Small problems (at most `dense_threshold()` vertices, 300 by default) and
-/// problems whose subspace would not be much smaller than `n` (`8 m > n`)
-/// are solved with a dense solver instead, which is exact and faster there.
-/// From 400 vertices on, wherever the block method can run, it was measured
-/// faster than the dense solver (one thread, `m` = 10 to 100): 900 vertices
-/// and `m` = 100 in 55 ms instead of 92 ms, `m` = 10 in 10 ms instead of 64 ms.
+/// Small problems (at most `dense_threshold()` vertices, 300 by default, or
+/// fewer than `5 m`), and problems whose subspace would not be much smaller
+/// than `n` (`8 m > n`) when the checked single-vector method does not
+/// apply or finds a copy missing, are solved with a dense solver instead,
+/// which is exact and faster there. From 400 vertices on, wherever the block
+/// method can run, it was measured faster than the dense solver (one thread,
+/// `m` = 10 to 100): 900 vertices and `m` = 100 in 55 ms instead of 92 ms,
+/// `m` = 10 in 10 ms instead of 64 ms.
 ///
 /// \tparam SparseSPDSolverTraits a model of `SparseSPDSolverTraits`, used to
 ///         factor `Q - sigma M`; its `solve()` receives `block_size()`
@@ -141,7 +156,7 @@ public:
     enum Stage {
       FACTORIZATION, ///< the shifted matrix `Q - sigma M` is being factored
       ITERATION,     ///< the subspace grows; reported after every block solve
-      REFERENCE_SOLVE, ///< the reference solver runs: the mesh is below `reference_threshold()`, or the subspace reached its maximum dimension unconverged; reported after every solve of the reference solver
+      REFERENCE_SOLVE, ///< the reference solver runs: on a small problem, checked (see `uses_checked_single_vector()`), or when the mesh is below `reference_threshold()`, or when the subspace reached its maximum dimension unconverged; reported after every solve of the reference solver
       DENSE_SOLVE,   ///< a small problem is solved with the dense solver (no intermediate report)
       APPROXIMATION, ///< `Partition_of_unity_eigensolver_traits` builds its space of sampled functions and solves the reduced problem (no intermediate report)
       FINISHED       ///< `compute()` is about to return, successfully or not
@@ -207,6 +222,21 @@ public:
   /// Sets `reference_threshold()`; 0 (the default) always runs the block
   /// method.
   void set_reference_threshold(Eigen::Index vertices) { m_reference_threshold = vertices; }
+
+  /// Whether `compute()` first runs the reference solver on `m` eigenpairs
+  /// of `n` vertices and checks its result by an eigenvalue count (see the
+  /// class description): when enabled (the default), above
+  /// `dense_threshold()`, for `5 m <= n <= 5000` and `n m² <= 4·10⁷` (up to
+  /// 4,000 vertices for m = 100, 1,000 for m = 200), where it was measured
+  /// faster than both the block and the dense method.
+  bool uses_checked_single_vector(Eigen::Index n, Eigen::Index m) const
+  {
+    const double work = static_cast<double>(n) * static_cast<double>(m) * static_cast<double>(m);
+    return m_checked_single_vector && n > m_dense_threshold && 5 * m <= n && n <= 5000 && work <= 4e7;
+  }
+
+  /// Enables or disables the checked single-vector method of small problems.
+  void set_checked_single_vector(bool enabled) { m_checked_single_vector = enabled; }
 
   /// The memory the subspace may take, in bytes (default 4 GiB). The cap on
   /// the subspace dimension is lowered to fit in it, and when even a typical
@@ -295,9 +325,11 @@ public:
     progress.number_of_vertices = static_cast<std::size_t>(n);
     progress.maximum_subspace_dimension = static_cast<std::size_t>(max_dimension);
     bool success = false;
+    if(uses_checked_single_vector(n, m) && solve_checked(stiffness, mass, m, progress, eigenvalues, eigenvectors))
+      success = true;
     // A typical subspace (4 m) would not be much smaller than n: the dense
     // solver is then both exact and cheaper.
-    if(n <= m_dense_threshold || 8 * m > n || dimension_in_n < m + b)
+    else if(n <= m_dense_threshold || 8 * m > n || dimension_in_n < m + b)
       success = solve_densely(stiffness, mass, m, progress, eigenvalues, eigenvectors);
     else if(n < m_reference_threshold || dimension_in_memory < round_up(4 * m, b))
     {
@@ -349,6 +381,33 @@ private:
     return Spectral_deformation::internal::Eigensolvers::dense_generalized_eigenpairs(
                stiffness, mass, m, eigenvalues, eigenvectors, message) ||
            fail(message);
+  }
+
+  // The reference solver, its result kept only when no eigenvalue below the
+  // largest one it found is missing.
+  bool solve_checked(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass, Eigen::Index m,
+                     Progress& progress, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors) const
+  {
+    std::string message;
+    Eigen::VectorXd values;
+    Eigen::MatrixXd vectors;
+    try
+    {
+      if(!run_reference(stiffness, mass, m, progress, values, vectors, message) ||
+         !Spectral_deformation::internal::Eigensolvers::smallest_eigenvalues_complete(stiffness, mass, values))
+        return false;
+    }
+    catch(const std::bad_alloc&)
+    {
+      throw;
+    }
+    catch(const std::exception&)
+    {
+      return false; // the other methods solve it, or report why they cannot
+    }
+    eigenvalues.swap(values);
+    eigenvectors.swap(vectors);
+    return true;
   }
 
   // The block method; when it does not converge within `max_dimension`,
@@ -436,6 +495,7 @@ private:
   Eigen::Index m_reference_threshold = 0;
   std::size_t m_memory_limit = std::size_t(4) << 30;
   bool m_reference_fallback = true;
+  bool m_checked_single_vector = true;
   bool m_process_wide_tuning = false;
   std::string m_error_message;
   Progress_callback m_progress_callback;
