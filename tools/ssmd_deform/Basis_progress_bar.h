@@ -221,7 +221,7 @@ private:
     case Progress::APPROXIMATION:
       return "approximation in a space of sampled functions";
     case Progress::REFERENCE_SOLVE:
-      return "reference Lanczos solver, " + std::to_string(progress.solves) + " solves";
+      return "single-vector Lanczos solver, " + std::to_string(progress.solves) + " solves";
     case Progress::ITERATION:
       return "Lanczos iteration";
     case Progress::FINISHED:
