@@ -24,7 +24,6 @@
 #include <cstddef>
 #include <exception>
 #include <functional>
-#include <new>
 #include <string>
 
 namespace CGAL {
@@ -384,27 +383,17 @@ private:
   }
 
   // The reference solver, its result kept only when no eigenvalue below the
-  // largest one it found is missing.
+  // largest one it found is missing. A failure of the reference solver only
+  // leaves the problem to the other methods, which report their own.
   bool solve_checked(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass, Eigen::Index m,
                      Progress& progress, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors) const
   {
     std::string message;
     Eigen::VectorXd values;
     Eigen::MatrixXd vectors;
-    try
-    {
-      if(!run_reference(stiffness, mass, m, progress, values, vectors, message) ||
-         !Spectral_deformation::internal::Eigensolvers::smallest_eigenvalues_complete(stiffness, mass, values))
-        return false;
-    }
-    catch(const std::bad_alloc&)
-    {
-      throw;
-    }
-    catch(const std::exception&)
-    {
-      return false; // the other methods solve it, or report why they cannot
-    }
+    if(!run_reference(stiffness, mass, m, progress, values, vectors, message) ||
+       !Spectral_deformation::internal::Eigensolvers::smallest_eigenvalues_complete(stiffness, mass, values))
+      return false;
     eigenvalues.swap(values);
     eigenvectors.swap(vectors);
     return true;

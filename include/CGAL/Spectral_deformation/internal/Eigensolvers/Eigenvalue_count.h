@@ -7,6 +7,8 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_EIGENVALUE_COUNT_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_EIGENVALUE_COUNT_H
 
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
+
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -27,10 +29,7 @@ namespace Eigensolvers {
 inline Eigen::Index eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
                                       double shift)
 {
-  Eigen::SparseMatrix<double> shifted = stiffness;
-  for(Eigen::Index i = 0; i < shifted.rows(); ++i)
-    shifted.coeffRef(i, i) -= shift * mass(i);
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(shifted);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(shifted_stiffness(stiffness, mass, shift));
   if(factorization.info() != Eigen::Success)
     return -1;
   const Eigen::VectorXd pivots = factorization.vectorD();
