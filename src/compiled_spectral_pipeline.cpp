@@ -5,6 +5,9 @@
 // pipelines of the three algorithms with the default traits, compiled once
 // for the programs that link the package's CMake targets.
 
+// The functions of the eigensolvers that are not templates are defined here,
+// once, for the programs that link the core (internal/compiled_core.h).
+#define CGAL_SSMD_COMPILING_CORE
 #include <CGAL/Spectral_deformation/Sparse_spd_solver_traits.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Compiled_spectral_pipeline.h>
 #include <CGAL/Spectral_deformation/internal/Deformation/Spatial_pipeline.h>

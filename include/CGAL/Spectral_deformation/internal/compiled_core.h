@@ -50,4 +50,24 @@
 #define CGAL_SSMD_USES_COMPILED_CORE 0
 #endif
 
+// The eigensolvers' functions that are not templates (declared in
+// internal/Eigensolvers/NAME.h, defined in NAME_impl.h), as CGAL's
+// CGAL_HEADER_ONLY and CGAL_INLINE_FUNCTION arrange its compiled parts: a
+// translation unit that uses the compiled core sees their declarations only,
+// and the core defines them once (CGAL_SSMD_COMPILING_CORE, set by its
+// source file); a translation unit without it defines them inline. Their
+// bodies instantiate much of Eigen's dense algebra whether or not they are
+// called: they were half the compile time of a program that includes
+// <CGAL/Spectral_surface_mesh_deformation.h> (benchmark/NOTES.md,
+// 2026-12-07, fifth).
+#if defined(CGAL_SSMD_COMPILING_CORE)
+#define CGAL_SSMD_CORE_DEFINITIONS 1
+#define CGAL_SSMD_CORE_FUNCTION
+#elif CGAL_SSMD_USES_COMPILED_CORE
+#define CGAL_SSMD_CORE_DEFINITIONS 0
+#else
+#define CGAL_SSMD_CORE_DEFINITIONS 1
+#define CGAL_SSMD_CORE_FUNCTION inline
+#endif
+
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_COMPILED_CORE_H

@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_BLOCK_LANCZOS_ITERATION_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_BLOCK_LANCZOS_ITERATION_H
 
+#include <CGAL/Spectral_deformation/internal/compiled_core.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_state.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_steps.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Laplacian_null_space.h>
@@ -121,27 +122,11 @@ bool factor_shifted_stiffness(SparseSPDSolverTraits& solver,
 // handed to `eigenvalues` and `eigenvectors` (V is left empty). After a
 // deflation of the Krylov subspace (`state.breakdown`), the residuals are
 // verified.
-inline bool accept_ritz_pairs(Block_lanczos_state& state, const Ritz_pairs& ritz, Eigen::Index k,
-                              const Block_lanczos_sizes& sizes, double sigma,
-                              const Eigen::SparseMatrix<double>& stiffness, double tolerance,
-                              Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
-                              Block_lanczos_failure& failure)
-{
-  Eigen::MatrixXd selected;
-  Eigen::VectorXd values = ritz_eigenvalues(ritz, sizes.known, sigma, k, selected);
-  if(!ritz_vectors_in_place(state.V, k, selected, state.mass,
-                            state.null_space.basis().leftCols(sizes.known)))
-    return failure.set("the Ritz vectors are not independent");
-  // The leading columns are kept without a copy (a realloc that shrinks a
-  // block mapped apart moves no data).
-  state.V.conservativeResize(state.n, sizes.m);
-  if(state.breakdown && !verify_eigenpairs(stiffness, state.mass, values, state.V, tolerance))
-    return failure.set("the eigenpairs found after a deflation of the Krylov subspace do not "
-                       "satisfy the tolerance");
-  eigenvalues.swap(values);
-  eigenvectors.swap(state.V);
-  return true;
-}
+bool accept_ritz_pairs(Block_lanczos_state& state, const Ritz_pairs& ritz, Eigen::Index k,
+                       const Block_lanczos_sizes& sizes, double sigma,
+                       const Eigen::SparseMatrix<double>& stiffness, double tolerance,
+                       Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
+                       Block_lanczos_failure& failure);
 
 // Grows the subspace block by block from a random start until the wanted
 // Ritz pairs converge (then computes the eigenpairs) or the subspace
@@ -230,5 +215,9 @@ bool block_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
+
+#if CGAL_SSMD_CORE_DEFINITIONS
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_iteration_impl.h>
+#endif
 
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_BLOCK_LANCZOS_ITERATION_H

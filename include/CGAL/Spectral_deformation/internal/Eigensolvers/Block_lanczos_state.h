@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_BLOCK_LANCZOS_STATE_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_BLOCK_LANCZOS_STATE_H
 
+#include <CGAL/Spectral_deformation/internal/compiled_core.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Laplacian_null_space.h>
 #include <CGAL/Spectral_deformation/internal/Memory/Page_mapping.h>
 
@@ -24,10 +25,7 @@ namespace Eigensolvers {
 using Memory::advise_huge_pages;
 using Memory::prefault;
 
-inline Eigen::Index round_up(Eigen::Index value, Eigen::Index multiple)
-{
-  return ((value + multiple - 1) / multiple) * multiple;
-}
+Eigen::Index round_up(Eigen::Index value, Eigen::Index multiple);
 
 // The sizes of one run of the block Lanczos method.
 struct Block_lanczos_sizes
@@ -144,5 +142,9 @@ struct Block_lanczos_state
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
+
+#if CGAL_SSMD_CORE_DEFINITIONS
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_state_impl.h>
+#endif
 
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_BLOCK_LANCZOS_STATE_H

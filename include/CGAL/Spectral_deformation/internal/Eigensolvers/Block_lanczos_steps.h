@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_BLOCK_LANCZOS_STEPS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_BLOCK_LANCZOS_STEPS_H
 
+#include <CGAL/Spectral_deformation/internal/compiled_core.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_state.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_orthogonalization.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Partial_reorthogonalization.h>
@@ -27,14 +28,7 @@ namespace Eigensolvers {
 
 // The first block: random, M-orthogonal to the known constants,
 // M-orthonormal. `R` receives its coupling to the random block.
-inline void start_lanczos(Block_lanczos_state& state, Eigen::MatrixXd& R)
-{
-  state.randomize_columns(state.block, 0);
-  orthogonalize_against_subspace(state, 0);
-  normalize_block(state, 0, R);
-  state.V.leftCols(state.b) = state.block;
-  state.W_block(0, 0).setIdentity();
-}
+void start_lanczos(Block_lanczos_state& state, Eigen::MatrixXd& R);
 
 // The shift-invert step: state.block = (Q - sigma M)^{-1} M V(:, k - b .. k),
 // the image of the last block, with `solver` holding the factor of
@@ -54,37 +48,15 @@ bool shift_invert_block(Block_lanczos_state& state, const SparseSPDSolverTraits&
 // (Partial_reorthogonalization.h). `R`, its coupling, is the lower block of
 // T. A block that lacked directions is completed against the whole
 // subspace: T stays exact, and the residuals are verified on the result.
-inline void extend_lanczos_basis(Block_lanczos_state& state, Eigen::Index k, Eigen::MatrixXd& R)
-{
-  const Eigen::Index b = state.b;
-  const Eigen::Index J = k / b - 1;
-  state.grow_projection(k);
-  state.null_space.project_out(state.block);
-  Eigen::MatrixXd column_block = Eigen::MatrixXd::Zero(k, b);
-  const Eigen::Index local = (std::max)(Eigen::Index(0), k - 2 * b);
-  project_out(state, local, k, &column_block);
-  project_out(state, local, k, &column_block);
-  state.T.block(0, k - b, k, b) = column_block;
-  if(!normalize_block(state, k, R))
-  {
-    state.breakdown = true;
-    state.reorthogonalize_next = true;
-    reset_orthogonality(state, J);
-  }
-  else if(estimate_orthogonality(state, J, R) > semi_orthogonality() || state.reorthogonalize_next)
-  {
-    reorthogonalize_block(state, k, R);
-    state.reorthogonalize_next = !state.reorthogonalize_next;
-    reset_orthogonality(state, J);
-    ++state.reorthogonalizations;
-  }
-  state.V.middleCols(k, b) = state.block;
-  state.T.block(k, k - b, b, b) = R;
-}
+void extend_lanczos_basis(Block_lanczos_state& state, Eigen::Index k, Eigen::MatrixXd& R);
 
 } // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
+
+#if CGAL_SSMD_CORE_DEFINITIONS
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_steps_impl.h>
+#endif
 
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_BLOCK_LANCZOS_STEPS_H

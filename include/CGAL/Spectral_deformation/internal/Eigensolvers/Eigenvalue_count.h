@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_EIGENVALUE_COUNT_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_EIGENVALUE_COUNT_H
 
+#include <CGAL/Spectral_deformation/internal/compiled_core.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
 
 #include <Eigen/Dense>
@@ -26,17 +27,8 @@ namespace Eigensolvers {
 // count the eigenvalues below the shift. The factorization does not pivot
 // (Eigen's SimplicialLDLT): -1 when it meets a zero or non-finite pivot, the
 // shift being (nearly) an eigenvalue of a leading block.
-inline Eigen::Index eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
-                                      double shift)
-{
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(shifted_stiffness(stiffness, mass, shift));
-  if(factorization.info() != Eigen::Success)
-    return -1;
-  const Eigen::VectorXd pivots = factorization.vectorD();
-  if(!pivots.allFinite() || (pivots.array() == 0.0).any())
-    return -1;
-  return (pivots.array() < 0.0).count();
-}
+Eigen::Index eigenvalues_below(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
+                               double shift);
 
 // Whether `eigenvalues` (ascending, each at or above the eigenvalue of its
 // rank, as the Ritz values of a Lanczos method are) are the smallest ones of
@@ -45,35 +37,17 @@ inline Eigen::Index eigenvalues_below(const Eigen::SparseMatrix<double>& stiffne
 // its copies will do (a dense solver also returns one choice among them), but
 // every eigenvalue below the cluster must be there. At most two sparse
 // factorizations of the size of Q.
-inline bool smallest_eigenvalues_complete(const Eigen::SparseMatrix<double>& stiffness,
-                                          const Eigen::VectorXd& mass, const Eigen::VectorXd& eigenvalues,
-                                          double relative_gap = 1e-5)
-{
-  const Eigen::Index m = eigenvalues.size();
-  if(m == 0)
-    return true;
-  const double top = eigenvalues(m - 1);
-  // Only zero eigenvalues (constant functions, computed as zero to rounding):
-  // no shift separates them from the rest. The diagonal of M⁻¹ Q gives the
-  // scale of the spectrum.
-  const double scale = stiffness.diagonal().cwiseQuotient(mass).cwiseAbs().maxCoeff();
-  if(!(top > 1e-10 * scale) || !std::isfinite(top))
-    return false;
-  const Eigen::Index below_top = eigenvalues_below(stiffness, mass, top * (1.0 + relative_gap));
-  if(below_top == m)
-    return true;
-  if(below_top < m)
-    return false;
-  const double cluster = top * (1.0 - relative_gap);
-  Eigen::Index under_cluster = 0;
-  while(under_cluster < m && eigenvalues(under_cluster) < cluster)
-    ++under_cluster;
-  return eigenvalues_below(stiffness, mass, cluster) == under_cluster;
-}
+bool smallest_eigenvalues_complete(const Eigen::SparseMatrix<double>& stiffness,
+                                   const Eigen::VectorXd& mass, const Eigen::VectorXd& eigenvalues,
+                                   double relative_gap = 1e-5);
 
 } // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
+
+#if CGAL_SSMD_CORE_DEFINITIONS
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Eigenvalue_count_impl.h>
+#endif
 
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_EIGENVALUE_COUNT_H

@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_RAYLEIGH_RITZ_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_RAYLEIGH_RITZ_H
 
+#include <CGAL/Spectral_deformation/internal/compiled_core.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_state.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Symmetric_eigenpairs.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
@@ -42,34 +43,12 @@ struct Ritz_pairs
 // (theta, y) is ‖R y_tail‖_M, with y_tail its last b coordinates and R the
 // coupling of the next block: it converged when the residual is at most
 // `tolerance * |theta|`. Returns false when the dense eigensolver fails.
-inline bool rayleigh_ritz(const Block_lanczos_state& state, Eigen::Index k, Eigen::Index wanted,
-                          double tolerance, const Eigen::MatrixXd& R, Ritz_pairs& ritz)
-{
-  const Eigen::MatrixXd projected =
-      0.5 * (state.T.topLeftCorner(k, k) + state.T.topLeftCorner(k, k).transpose());
-  if(!largest_symmetric_eigenpairs(projected, wanted, ritz.values, ritz.coordinates))
-    return false;
-  // Largest theta first: the smallest lambda.
-  ritz.converged = 0;
-  ritz.slowest = 0;
-  for(Eigen::Index i = 0; i < wanted; ++i)
-  {
-    const Eigen::Index column = wanted - 1 - i;
-    const double theta = ritz.values[column];
-    const double residual = (R * ritz.coordinates.col(column).tail(state.b)).norm();
-    if(residual <= tolerance * std::abs(theta))
-      ++ritz.converged;
-    ritz.slowest = (std::max)(ritz.slowest, residual / (tolerance * std::abs(theta)));
-  }
-  return true;
-}
+bool rayleigh_ritz(const Block_lanczos_state& state, Eigen::Index k, Eigen::Index wanted,
+                   double tolerance, const Eigen::MatrixXd& R, Ritz_pairs& ritz);
 
 // Each Rayleigh-Ritz check costs a dense k × k eigendecomposition: the
 // checks start where convergence is plausible.
-inline Eigen::Index first_check_dimension(Eigen::Index m, Eigen::Index b)
-{
-  return (std::max)(m + b, round_up((3 * m) / 2, b));
-}
+Eigen::Index first_check_dimension(Eigen::Index m, Eigen::Index b);
 
 // Where the next check goes. A check costs a dense k × k eigendecomposition
 // (3 to 14 ms at k = 150 to 340 on the 2-core machine of the notes), more
@@ -124,43 +103,23 @@ private:
 // The eigenpairs of the converged Ritz pairs: the known zero eigenvalues,
 // then lambda = sigma + 1 / theta, ascending; `selected` (k × wanted)
 // receives the coordinates in the same order.
-inline Eigen::VectorXd ritz_eigenvalues(const Ritz_pairs& ritz, Eigen::Index known, double sigma,
-                                        Eigen::Index k, Eigen::MatrixXd& selected)
-{
-  const Eigen::Index wanted = ritz.values.size();
-  selected.resize(k, wanted);
-  for(Eigen::Index i = 0; i < wanted; ++i)
-    selected.col(i) = ritz.coordinates.col(wanted - 1 - i);
-  Eigen::VectorXd values(known + wanted);
-  values.head(known).setZero();
-  for(Eigen::Index i = 0; i < wanted; ++i)
-    values[known + i] = sigma + 1.0 / ritz.values[wanted - 1 - i];
-  return values;
-}
+Eigen::VectorXd ritz_eigenvalues(const Ritz_pairs& ritz, Eigen::Index known, double sigma,
+                                 Eigen::Index k, Eigen::MatrixXd& selected);
 
 // Checks ‖Q h - lambda M h‖ against the tolerance directly, relative to the
 // spread of the computed spectrum and the shift, as the residuals reported
 // by the benchmarks.
-inline bool verify_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
-                              const Eigen::VectorXd& mass, const Eigen::VectorXd& eigenvalues,
-                              const Eigen::MatrixXd& eigenvectors, double tolerance)
-{
-  const Eigen::VectorXd inverse_sqrt_mass = mass.cwiseSqrt().cwiseInverse();
-  const double sigma = shift_invert_shift(mass);
-  const double scale = (std::max)(1e-6, 1e3 * tolerance) * (eigenvalues.maxCoeff() - sigma);
-  for(Eigen::Index i = 0; i < eigenvalues.size(); ++i)
-  {
-    const Eigen::VectorXd residual =
-        stiffness * eigenvectors.col(i) - eigenvalues[i] * mass.cwiseProduct(eigenvectors.col(i));
-    if(!(inverse_sqrt_mass.cwiseProduct(residual).norm() <= scale))
-      return false;
-  }
-  return true;
-}
+bool verify_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
+                       const Eigen::VectorXd& mass, const Eigen::VectorXd& eigenvalues,
+                       const Eigen::MatrixXd& eigenvectors, double tolerance);
 
 } // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
+
+#if CGAL_SSMD_CORE_DEFINITIONS
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Rayleigh_ritz_impl.h>
+#endif
 
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_RAYLEIGH_RITZ_H

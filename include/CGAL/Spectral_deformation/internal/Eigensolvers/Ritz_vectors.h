@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_RITZ_VECTORS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_RITZ_VECTORS_H
 
+#include <CGAL/Spectral_deformation/internal/compiled_core.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Dense_products.h>
 
 #include <Eigen/Dense>
@@ -39,109 +40,36 @@ using Linear_algebra::dense_product;
 // reads the vectors again and multiplies them by Q.
 
 // Rows of a panel, and the threads the panels are split between.
-inline Eigen::Index ritz_panel_rows() { return 512; }
+Eigen::Index ritz_panel_rows();
 
-inline int ritz_vector_threads()
-{
-#ifdef _OPENMP
-  return omp_in_parallel() ? 1 : (std::min)(omp_get_max_threads(), 8);
-#else
-  return 1;
-#endif
-}
+int ritz_vector_threads();
 
 // Overwrites the leading columns of V with the known eigenvectors, then the
 // Ritz vectors Y = V(:, 0 .. k) S (rows are independent in that product),
 // and returns Yᵀ M Y.
-inline Eigen::MatrixXd ritz_vectors_with_gram(Eigen::MatrixXd& V, Eigen::Index k,
-                                              const Eigen::MatrixXd& S, const Eigen::VectorXd& mass,
-                                              const Eigen::MatrixXd& known_vectors)
-{
-  typedef Eigen::MatrixXd Matrix;
-  const Eigen::Index n = V.rows(), known = known_vectors.cols(), wanted = S.cols();
-  const Eigen::Index panel = ritz_panel_rows(), panels = (n + panel - 1) / panel;
-  const int threads = ritz_vector_threads();
-  std::vector<Matrix> grams(static_cast<std::size_t>(threads), Matrix::Zero(wanted, wanted));
-#ifdef _OPENMP
-#pragma omp parallel num_threads(threads)
-#endif
-  {
-    int thread = 0;
-#ifdef _OPENMP
-    thread = omp_get_thread_num();
-#endif
-    Matrix ritz(panel, wanted), weighted(panel, wanted);
-    Matrix& gram = grams[static_cast<std::size_t>(thread)];
-#ifdef _OPENMP
-#pragma omp for schedule(static)
-#endif
-    for(Eigen::Index p = 0; p < panels; ++p)
-    {
-      const Eigen::Index first = p * panel, rows = (std::min)(panel, n - first);
-      auto ritz_rows = ritz.topRows(rows);
-      auto weighted_rows = weighted.topRows(rows);
-      dense_product(false, V.block(first, 0, rows, k), false, S, 1.0, 0.0, ritz_rows);
-      weighted_rows = mass.segment(first, rows).asDiagonal() * ritz_rows;
-      dense_product(true, ritz_rows, false, weighted_rows, 1.0, 1.0, gram);
-      V.block(first, 0, rows, known) = known_vectors.middleRows(first, rows);
-      V.block(first, known, rows, wanted) = ritz_rows;
-    }
-  }
-  for(std::size_t t = 1; t < grams.size(); ++t)
-    grams[0] += grams[t];
-  return 0.5 * (grams[0] + grams[0].transpose());
-}
+Eigen::MatrixXd ritz_vectors_with_gram(Eigen::MatrixXd& V, Eigen::Index k,
+                                       const Eigen::MatrixXd& S, const Eigen::VectorXd& mass,
+                                       const Eigen::MatrixXd& known_vectors);
 
 // V(:, known .. known + wanted) U^{-1}, in place, with gram = Uᵀ U
 // (Cholesky), unless gram is the identity to rounding. Returns false when
 // the columns are not independent.
-inline bool orthonormalize_in_place(Eigen::MatrixXd& V, Eigen::Index known,
-                                    const Eigen::MatrixXd& gram)
-{
-  typedef Eigen::MatrixXd Matrix;
-  const Eigen::Index n = V.rows(), wanted = gram.rows();
-  if((gram - Matrix::Identity(wanted, wanted)).cwiseAbs().maxCoeff() <= 1e-13)
-    return true;
-  Eigen::LLT<Matrix> cholesky(gram);
-  if(cholesky.info() != Eigen::Success)
-    return false;
-  const Matrix inverse_upper = cholesky.matrixU().solve(Matrix::Identity(wanted, wanted));
-  const Eigen::Index panel = ritz_panel_rows(), panels = (n + panel - 1) / panel;
-  const int threads = ritz_vector_threads();
-  (void)threads;
-#ifdef _OPENMP
-#pragma omp parallel num_threads(threads)
-#endif
-  {
-    Matrix rotated(panel, wanted);
-#ifdef _OPENMP
-#pragma omp for schedule(static)
-#endif
-    for(Eigen::Index p = 0; p < panels; ++p)
-    {
-      const Eigen::Index first = p * panel, rows = (std::min)(panel, n - first);
-      auto rotated_rows = rotated.topRows(rows);
-      dense_product(false, V.block(first, known, rows, wanted), false, inverse_upper, 1.0, 0.0,
-                    rotated_rows);
-      V.block(first, known, rows, wanted) = rotated_rows;
-    }
-  }
-  return true;
-}
+bool orthonormalize_in_place(Eigen::MatrixXd& V, Eigen::Index known,
+                             const Eigen::MatrixXd& gram);
 
 // Overwrites the leading columns of V with the eigenvectors: the known
 // ones, then the Ritz vectors V(:, 0 .. k) S, M-orthonormal. Returns false
 // when the Ritz vectors are not independent.
-inline bool ritz_vectors_in_place(Eigen::MatrixXd& V, Eigen::Index k, const Eigen::MatrixXd& S,
-                                  const Eigen::VectorXd& mass, const Eigen::MatrixXd& known_vectors)
-{
-  const Eigen::MatrixXd gram = ritz_vectors_with_gram(V, k, S, mass, known_vectors);
-  return orthonormalize_in_place(V, known_vectors.cols(), gram);
-}
+bool ritz_vectors_in_place(Eigen::MatrixXd& V, Eigen::Index k, const Eigen::MatrixXd& S,
+                           const Eigen::VectorXd& mass, const Eigen::MatrixXd& known_vectors);
 
 } // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
+
+#if CGAL_SSMD_CORE_DEFINITIONS
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Ritz_vectors_impl.h>
+#endif
 
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_RITZ_VECTORS_H

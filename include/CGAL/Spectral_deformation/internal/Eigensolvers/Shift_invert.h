@@ -7,6 +7,8 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SHIFT_INVERT_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SHIFT_INVERT_H
 
+#include <CGAL/Spectral_deformation/internal/compiled_core.h>
+
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
@@ -19,24 +21,19 @@ namespace Eigensolvers {
 // the spectrum (the first non-zero eigenvalue of a sphere of the same area is
 // 8 pi / area), so that Q - sigma M is positive definite although Q is
 // singular.
-inline double shift_invert_shift(const Eigen::VectorXd& mass)
-{
-  return -1e-2 * 4.0 * 3.14159265358979323846 / mass.sum();
-}
+double shift_invert_shift(const Eigen::VectorXd& mass);
 
 // Q - sigma M for the diagonal (lumped) mass matrix M.
-inline Eigen::SparseMatrix<double> shifted_stiffness(const Eigen::SparseMatrix<double>& stiffness,
-                                                     const Eigen::VectorXd& mass, double sigma)
-{
-  Eigen::SparseMatrix<double> shifted = stiffness;
-  for(Eigen::Index i = 0; i < mass.size(); ++i)
-    shifted.coeffRef(i, i) -= sigma * mass[i];
-  return shifted;
-}
+Eigen::SparseMatrix<double> shifted_stiffness(const Eigen::SparseMatrix<double>& stiffness,
+                                              const Eigen::VectorXd& mass, double sigma);
 
 } // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
+
+#if CGAL_SSMD_CORE_DEFINITIONS
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert_impl.h>
+#endif
 
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SHIFT_INVERT_H

@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SPECTRA_LANCZOS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SPECTRA_LANCZOS_H
 
+#include <CGAL/Spectral_deformation/internal/compiled_core.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Shift_invert.h>
 #include <CGAL/Spectral_deformation/internal/Memory/Process_wide_tuning.h>
 
@@ -97,10 +98,7 @@ private:
 
 // The dimension of the Lanczos subspace for m eigenpairs of an n × n
 // problem: 2 m + 1, at least m + 20, at most n.
-inline Eigen::Index spectra_subspace_dimension(Eigen::Index n, Eigen::Index m)
-{
-  return (std::min)(n, (std::max)(2 * m + 1, m + 20));
-}
+Eigen::Index spectra_subspace_dimension(Eigen::Index n, Eigen::Index m);
 
 // Settings of one run of spectra_shift_invert_eigenpairs().
 struct Spectra_lanczos_settings
@@ -157,5 +155,9 @@ bool spectra_shift_invert_eigenpairs(const Eigen::SparseMatrix<double>& stiffnes
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
+
+#if CGAL_SSMD_CORE_DEFINITIONS
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Spectra_lanczos_impl.h>
+#endif
 
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SPECTRA_LANCZOS_H

@@ -7,6 +7,8 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SYMMETRIC_EIGENPAIRS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SYMMETRIC_EIGENPAIRS_H
 
+#include <CGAL/Spectral_deformation/internal/compiled_core.h>
+
 #include <Eigen/Dense>
 
 #include <vector>
@@ -39,29 +41,9 @@ namespace Eigensolvers {
 #ifdef CGAL_SSMD_USE_BLAS
 /// All eigenpairs of the symmetric matrix `A` by dsyevd, of which those of
 /// ranks `first` to `first + count - 1` are returned; `A` is overwritten.
-inline bool symmetric_eigenpairs_by_divide_and_conquer(Eigen::MatrixXd& A, Eigen::Index first,
-                                                       Eigen::Index count, Eigen::VectorXd& values,
-                                                       Eigen::MatrixXd& vectors)
-{
-  const int size = static_cast<int>(A.rows());
-  Eigen::VectorXd all_values(A.rows());
-  double work_size = 0;
-  int iwork_size = 0, query = -1, info = 0;
-  dsyevd_("V", "L", &size, A.data(), &size, all_values.data(), &work_size, &query, &iwork_size,
-          &query, &info);
-  if(info != 0)
-    return false;
-  const int lwork = static_cast<int>(work_size), liwork = iwork_size;
-  std::vector<double> work(static_cast<std::size_t>(lwork));
-  std::vector<int> iwork(static_cast<std::size_t>(liwork));
-  dsyevd_("V", "L", &size, A.data(), &size, all_values.data(), work.data(), &lwork, iwork.data(),
-          &liwork, &info);
-  if(info != 0)
-    return false;
-  values = all_values.segment(first, count);
-  vectors = A.middleCols(first, count);
-  return values.allFinite() && vectors.allFinite();
-}
+bool symmetric_eigenpairs_by_divide_and_conquer(Eigen::MatrixXd& A, Eigen::Index first,
+                                                Eigen::Index count, Eigen::VectorXd& values,
+                                                Eigen::MatrixXd& vectors);
 #endif
 
 /// The eigenpairs of ranks `first` to `first + count - 1` (ascending order,
@@ -69,69 +51,26 @@ inline bool symmetric_eigenpairs_by_divide_and_conquer(Eigen::MatrixXd& A, Eigen
 /// `values` ascending, `vectors` (rows of A × count) orthonormal. Returns
 /// false when the eigensolver fails. `A` is taken by value: LAPACK
 /// overwrites it.
-inline bool symmetric_eigenpairs_in_range(Eigen::MatrixXd A, Eigen::Index first, Eigen::Index count,
-                                          Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
-{
-  const Eigen::Index n = A.rows();
-  if(count < 1 || first < 0 || first + count > n)
-    return false;
-#ifdef CGAL_SSMD_USE_BLAS
-  if(4 * count >= n)
-    return symmetric_eigenpairs_by_divide_and_conquer(A, first, count, values, vectors);
-  const int size = static_cast<int>(n);
-  const int lowest = static_cast<int>(first + 1), highest = static_cast<int>(first + count);
-  const double unused = 0, absolute_tolerance = 0;
-  int found = 0, info = 0;
-  Eigen::VectorXd all_values(n);
-  vectors.resize(n, count);
-  std::vector<int> support(2 * static_cast<std::size_t>(count));
-  // Workspace query, then the solve.
-  double work_size = 0;
-  int iwork_size = 0, query = -1;
-  dsyevr_("V", "I", "L", &size, A.data(), &size, &unused, &unused, &lowest, &highest,
-          &absolute_tolerance, &found, all_values.data(), vectors.data(), &size, support.data(),
-          &work_size, &query, &iwork_size, &query, &info);
-  if(info != 0)
-    return false;
-  const int lwork = static_cast<int>(work_size), liwork = iwork_size;
-  std::vector<double> work(static_cast<std::size_t>(lwork));
-  std::vector<int> iwork(static_cast<std::size_t>(liwork));
-  dsyevr_("V", "I", "L", &size, A.data(), &size, &unused, &unused, &lowest, &highest,
-          &absolute_tolerance, &found, all_values.data(), vectors.data(), &size, support.data(),
-          work.data(), &lwork, iwork.data(), &liwork, &info);
-  if(info != 0 || found != static_cast<int>(count))
-    return false;
-  values = all_values.head(count);
-  return values.allFinite() && vectors.allFinite();
-#else
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(A);
-  if(solver.info() != Eigen::Success)
-    return false;
-  values = solver.eigenvalues().segment(first, count);
-  vectors = solver.eigenvectors().middleCols(first, count);
-  return true;
-#endif
-}
+bool symmetric_eigenpairs_in_range(Eigen::MatrixXd A, Eigen::Index first, Eigen::Index count,
+                                   Eigen::VectorXd& values, Eigen::MatrixXd& vectors);
 
 /// The `count` largest eigenpairs of the symmetric matrix `A`, as
 /// `symmetric_eigenpairs_in_range()`.
-inline bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index count,
-                                         Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
-{
-  return symmetric_eigenpairs_in_range(A, A.rows() - count, count, values, vectors);
-}
+bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index count,
+                                  Eigen::VectorXd& values, Eigen::MatrixXd& vectors);
 
 /// The `count` smallest eigenpairs of the symmetric matrix `A`, as
 /// `symmetric_eigenpairs_in_range()`.
-inline bool smallest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index count,
-                                          Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
-{
-  return symmetric_eigenpairs_in_range(A, 0, count, values, vectors);
-}
+bool smallest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index count,
+                                   Eigen::VectorXd& values, Eigen::MatrixXd& vectors);
 
 } // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
+
+#if CGAL_SSMD_CORE_DEFINITIONS
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Symmetric_eigenpairs_impl.h>
+#endif
 
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SYMMETRIC_EIGENPAIRS_H

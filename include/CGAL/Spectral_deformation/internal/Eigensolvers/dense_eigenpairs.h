@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_DENSE_EIGENPAIRS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_DENSE_EIGENPAIRS_H
 
+#include <CGAL/Spectral_deformation/internal/compiled_core.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Symmetric_eigenpairs.h>
 
 #include <Eigen/Dense>
@@ -22,29 +23,18 @@ namespace Eigensolvers {
 /// The m smallest eigenpairs of `Q h = lambda M h`, `M = diag(mass)`, by a
 /// dense symmetric eigensolver: for the small problems where an iterative
 /// method has no advantage. Returns false with `message` set on failure.
-inline bool dense_generalized_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
-                                         const Eigen::VectorXd& mass, Eigen::Index m,
-                                         Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
-                                         std::string& message)
-{
-  // M^{-1/2} Q M^{-1/2} y = lambda y with h = M^{-1/2} y is the same problem,
-  // symmetric and standard because M is diagonal and positive.
-  const Eigen::VectorXd inv_sqrt_mass = mass.cwiseSqrt().cwiseInverse();
-  const Eigen::MatrixXd scaled =
-      inv_sqrt_mass.asDiagonal() * Eigen::MatrixXd(stiffness) * inv_sqrt_mass.asDiagonal();
-  Eigen::MatrixXd vectors;
-  if(!smallest_symmetric_eigenpairs(scaled, m, eigenvalues, vectors))
-  {
-    message = "the dense eigensolver did not converge";
-    return false;
-  }
-  eigenvectors = inv_sqrt_mass.asDiagonal() * vectors;
-  return true;
-}
+bool dense_generalized_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
+                                  const Eigen::VectorXd& mass, Eigen::Index m,
+                                  Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
+                                  std::string& message);
 
 } // namespace Eigensolvers
 } // namespace internal
 } // namespace Spectral_deformation
 } // namespace CGAL
+
+#if CGAL_SSMD_CORE_DEFINITIONS
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/dense_eigenpairs_impl.h>
+#endif
 
 #endif // CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_DENSE_EIGENPAIRS_H
