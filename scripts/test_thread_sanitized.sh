@@ -11,7 +11,7 @@ build="${SSMD_TSAN_BUILD_DIR:-$root/build-tsan}"
 jobs="${SSMD_JOBS:-$(nproc)}"
 
 bash "$root/scripts/install_dependencies.sh"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-Og -g1 -DNDEBUG" -DSSMD_SANITIZE_THREAD=ON \
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-Og -g1 -DNDEBUG" -DSSMD_CORE_COMPILE_OPTIONS=-O1 -DSSMD_SANITIZE_THREAD=ON \
   -DSSMD_USE_OPENMP=OFF -DSSMD_BUILD_TESTS=ON -DSSMD_BUILD_EXAMPLES=OFF -DSSMD_BUILD_BENCHMARKS=OFF \
   -DSSMD_BUILD_DOC=OFF -DSSMD_BUILD_TOOLS=OFF -DSSMD_BUILD_FUZZERS=OFF -DSSMD_BUILD_PYTHON=OFF >/dev/null
 cmake --build "$build" --parallel "$jobs" --target test_concurrency
