@@ -7,9 +7,14 @@
 #include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Eigenvalue_count.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Dense_products.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Dirichlet_system.h>
 
 #include <catch2/catch.hpp>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -494,6 +499,89 @@ TEST_CASE("block Lanczos: settings of the process change only on request",
   // sum in another order).
   CHECK((values[0] - values[1]).cwiseAbs().maxCoeff() < 1e-10 * values[0].maxCoeff());
   CHECK(subspace_distance(vectors[0].leftCols(19), vectors[1].leftCols(19), mass) < 1e-6);
+}
+
+TEST_CASE("dense products: the pieces of the BLAS calls make the whole product, for every shape",
+          "[basis][dense_products]")
+{
+  using CGAL::Spectral_deformation::internal::Linear_algebra::dense_product;
+  // Shapes of the eigensolver (a tall block against a few columns, a panel
+  // of Ritz vectors, a Gram matrix over a long inner dimension) and odd ones,
+  // each far above the size of one piece or just at it; operands are blocks
+  // of larger matrices (outer strides larger than their rows).
+  struct Shape
+  {
+    Eigen::Index rows, cols, depth;
+  };
+  const Shape shapes[] = {{320, 8, 13552}, {13552, 8, 320}, {512, 100, 320}, {100, 100, 9000},
+                          {7, 300, 1000},  {1, 1, 5000},    {64, 64, 64},    {3, 2, 1}};
+  std::mt19937 generator(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  auto random_matrix = [&](Eigen::Index r, Eigen::Index c) {
+    Eigen::MatrixXd X(r + 3, c + 2);
+    for(Eigen::Index j = 0; j < X.cols(); ++j)
+      for(Eigen::Index i = 0; i < X.rows(); ++i)
+        X(i, j) = uniform(generator);
+    return X;
+  };
+  for(const Shape& shape : shapes)
+    for(int transposes = 0; transposes < 4; ++transposes)
+    {
+      const bool ta = (transposes & 1) != 0, tb = (transposes & 2) != 0;
+      INFO(shape.rows << " x " << shape.cols << " x " << shape.depth << ", transposes " << ta << tb);
+      Eigen::MatrixXd A_storage = ta ? random_matrix(shape.depth, shape.rows) : random_matrix(shape.rows, shape.depth);
+      Eigen::MatrixXd B_storage = tb ? random_matrix(shape.cols, shape.depth) : random_matrix(shape.depth, shape.cols);
+      Eigen::MatrixXd C_storage = random_matrix(shape.rows, shape.cols);
+      const auto A = ta ? A_storage.block(1, 1, shape.depth, shape.rows) : A_storage.block(1, 1, shape.rows, shape.depth);
+      const auto B = tb ? B_storage.block(2, 0, shape.cols, shape.depth) : B_storage.block(2, 0, shape.depth, shape.cols);
+      const Eigen::MatrixXd opA = ta ? Eigen::MatrixXd(A.transpose()) : Eigen::MatrixXd(A);
+      const Eigen::MatrixXd opB = tb ? Eigen::MatrixXd(B.transpose()) : Eigen::MatrixXd(B);
+      const Eigen::MatrixXd C_before = C_storage;
+      const Eigen::MatrixXd expected =
+          0.25 * C_before.block(1, 1, shape.rows, shape.cols) + (-1.5) * (opA * opB);
+      auto C = C_storage.block(1, 1, shape.rows, shape.cols);
+      dense_product(ta, A, tb, B, -1.5, 0.25, C);
+      // Each entry is a sum of `depth` products of entries of at most 1.
+      const double tolerance = 1e-15 * static_cast<double>(shape.depth) + 1e-15;
+      CHECK((C_storage.block(1, 1, shape.rows, shape.cols) - expected).cwiseAbs().maxCoeff() < tolerance);
+      // Nothing of C outside the block changes.
+      Eigen::MatrixXd outside = C_storage - C_before;
+      outside.block(1, 1, shape.rows, shape.cols).setZero();
+      CHECK(outside.cwiseAbs().maxCoeff() == 0.0);
+      // beta = 0 ignores what C held, even non-finite values.
+      C.setConstant(std::numeric_limits<double>::quiet_NaN());
+      dense_product(ta, A, tb, B, 1.0, 0.0, C);
+      CHECK((C - opA * opB).cwiseAbs().maxCoeff() < tolerance);
+    }
+}
+
+// Its parallel sums are split in pieces fixed by the sizes and added in a
+// fixed order, and its solves split by subtrees run the same operations on
+// one thread: the basis does not depend on the number of OpenMP threads.
+// 17,161 vertices: the tall products are split (from 16,384 rows).
+TEST_CASE("block Lanczos: the same basis to the last bit on one and two threads", "[basis][block_lanczos]")
+{
+#ifdef _OPENMP
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(130));
+  REQUIRE(num_vertices(mesh) >= 16384);
+  const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
+  const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(mesh).diagonal();
+  Eigen::VectorXd values[2];
+  Eigen::MatrixXd vectors[2];
+  const int threads = omp_get_max_threads();
+  for(int t = 0; t < 2; ++t)
+  {
+    omp_set_num_threads(t + 1);
+    CGAL::Block_lanczos_eigensolver_traits<> block;
+    const bool computed = block.compute(Q, mass, 30, values[t], vectors[t]);
+    omp_set_num_threads(threads);
+    REQUIRE(computed);
+  }
+  CHECK(values[0] == values[1]);
+  CHECK(vectors[0] == vectors[1]);
+#else
+  SUCCEED("without OpenMP the eigensolver runs on one thread");
+#endif
 }
 
 TEST_CASE("block Lanczos: the constants of each component are deflated, only for a Laplacian",
@@ -982,6 +1070,17 @@ TEST_CASE("CHOLMOD simplicial solver traits: solves split by subtrees agree with
       REQUIRE(independent.solve(B, expected));
       CHECK((X - expected).norm() < 1e-10 * expected.norm());
       CHECK((A * X - B).norm() < 1e-10 * B.norm());
+#ifdef _OPENMP
+      // On one thread the subtrees are solved one after the other, with the
+      // same operations: the same result to the last bit.
+      const int threads = omp_get_max_threads();
+      omp_set_num_threads(1);
+      Eigen::MatrixXd X_one_thread;
+      const bool solved_on_one_thread = solver.solve(B, X_one_thread);
+      omp_set_num_threads(threads);
+      REQUIRE(solved_on_one_thread);
+      CHECK(X_one_thread == X);
+#endif
     }
   }
 }

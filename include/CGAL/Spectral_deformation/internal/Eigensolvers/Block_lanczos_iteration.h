@@ -37,7 +37,7 @@ namespace Spectral_deformation {
 namespace internal {
 namespace Eigensolvers {
 
-using Linear_algebra::Threads_for_blas_or_openmp;
+using Linear_algebra::Single_threaded_blas_scope;
 using Memory::Background_prefault;
 using Memory::prefault_until;
 using Memory::set_process_wide_tuning_if_supported;
@@ -185,7 +185,7 @@ bool block_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffness,
                               Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
                               Block_lanczos_failure& failure)
 {
-  const Threads_for_blas_or_openmp threads(settings.process_wide_tuning);
+  const Single_threaded_blas_scope threads(settings.process_wide_tuning);
   const double sigma = shift_invert_shift(mass);
   const Laplacian_null_space null_space(stiffness, mass);
   Block_lanczos_sizes sizes;

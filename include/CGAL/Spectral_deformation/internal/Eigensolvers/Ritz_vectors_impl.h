@@ -37,34 +37,37 @@ CGAL_SSMD_CORE_FUNCTION Eigen::MatrixXd ritz_vectors_with_gram(Eigen::MatrixXd& 
   const Eigen::Index n = V.rows(), known = known_vectors.cols(), wanted = S.cols();
   const Eigen::Index panel = ritz_panel_rows(), panels = (n + panel - 1) / panel;
   const int threads = ritz_vector_threads();
-  std::vector<Matrix> grams(static_cast<std::size_t>(threads), Matrix::Zero(wanted, wanted));
+  // The Gram matrix is summed in groups of consecutive panels whose number
+  // depends on the sizes only, then group after group: the same result
+  // whatever the number of threads.
+  const Eigen::Index groups = (std::max)(Eigen::Index(1), (std::min)(panels, Eigen::Index(8)));
+  std::vector<Matrix> grams(static_cast<std::size_t>(groups), Matrix::Zero(wanted, wanted));
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads)
 #endif
   {
-    int thread = 0;
-#ifdef _OPENMP
-    thread = omp_get_thread_num();
-#endif
     Matrix ritz(panel, wanted), weighted(panel, wanted);
-    Matrix& gram = grams[static_cast<std::size_t>(thread)];
 #ifdef _OPENMP
 #pragma omp for schedule(static)
 #endif
-    for(Eigen::Index p = 0; p < panels; ++p)
+    for(Eigen::Index g = 0; g < groups; ++g)
     {
-      const Eigen::Index first = p * panel, rows = (std::min)(panel, n - first);
-      auto ritz_rows = ritz.topRows(rows);
-      auto weighted_rows = weighted.topRows(rows);
-      dense_product(false, V.block(first, 0, rows, k), false, S, 1.0, 0.0, ritz_rows);
-      weighted_rows = mass.segment(first, rows).asDiagonal() * ritz_rows;
-      dense_product(true, ritz_rows, false, weighted_rows, 1.0, 1.0, gram);
-      V.block(first, 0, rows, known) = known_vectors.middleRows(first, rows);
-      V.block(first, known, rows, wanted) = ritz_rows;
+      Matrix& gram = grams[static_cast<std::size_t>(g)];
+      for(Eigen::Index p = panels * g / groups; p < panels * (g + 1) / groups; ++p)
+      {
+        const Eigen::Index first = p * panel, rows = (std::min)(panel, n - first);
+        auto ritz_rows = ritz.topRows(rows);
+        auto weighted_rows = weighted.topRows(rows);
+        dense_product(false, V.block(first, 0, rows, k), false, S, 1.0, 0.0, ritz_rows);
+        weighted_rows = mass.segment(first, rows).asDiagonal() * ritz_rows;
+        dense_product(true, ritz_rows, false, weighted_rows, 1.0, 1.0, gram);
+        V.block(first, 0, rows, known) = known_vectors.middleRows(first, rows);
+        V.block(first, known, rows, wanted) = ritz_rows;
+      }
     }
   }
-  for(std::size_t t = 1; t < grams.size(); ++t)
-    grams[0] += grams[t];
+  for(std::size_t g = 1; g < grams.size(); ++g)
+    grams[0] += grams[g];
   return 0.5 * (grams[0] + grams[0].transpose());
 }
 

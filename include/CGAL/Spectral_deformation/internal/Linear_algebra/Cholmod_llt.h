@@ -184,10 +184,12 @@ public:
     // The work arrays of the first solve are allocated then.
     const Memory::Cholmod_huge_page_allocator huge_pages(
         m_process_wide_tuning);
-    if(m_subtree_solve.usable() &&
-       available_threads() >=
-           Two_subtree_triangular_solve::number_of_subtrees)
-      return solve_in_subtrees(B, X) && X.allFinite();
+    // A factor split by subtrees is always solved that way, on one thread
+    // when no second is available: the result is then the same whatever the
+    // number of threads.
+    if(m_subtree_solve.usable())
+      return solve_in_subtrees(B, X, available_threads() >= Two_subtree_triangular_solve::number_of_subtrees) &&
+             X.allFinite();
     // Otherwise a simplicial factor is solved column by column without the
     // BLAS: two threads each solve half of the right-hand sides against the
     // shared, read-only factor, with their own CHOLMOD workspace (the
@@ -410,14 +412,15 @@ private:
     return true;
   }
 
-  // Solves with the factor split between two threads by subtrees of its
-  // elimination tree (see Two_subtree_triangular_solve::solve_permuted()).
-  bool solve_in_subtrees(const Dense_matrix& B, Dense_matrix& X) const
+  // Solves with the factor split by subtrees of its elimination tree, on
+  // two threads with `parallel` (see
+  // Two_subtree_triangular_solve::solve_permuted()).
+  bool solve_in_subtrees(const Dense_matrix& B, Dense_matrix& X, bool parallel) const
   {
     const cholmod_factor* L = m_solver.factor();
     m_subtree_solve.solve_permuted(static_cast<const int*>(L->p), static_cast<const int*>(L->i),
                                    static_cast<const double*>(L->x), m_factor_position.data(), B,
-                                   X, m_rows);
+                                   X, m_rows, parallel);
     return true;
   }
 

@@ -7,11 +7,11 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_DENSE_PRODUCTS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_DENSE_PRODUCTS_H
 
-#include <CGAL/Spectral_deformation/internal/available_threads.h>
 
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 #ifdef _OPENMP
@@ -24,6 +24,11 @@
 // dgemm, which picks vector instructions at run time (OpenBLAS: AVX2/FMA),
 // which Eigen's own product cannot use when compiled without -march.
 // Otherwise Eigen computes them.
+//
+// The BLAS is called in pieces of at most `blas_piece_multiply_adds()`
+// multiply-adds, which OpenBLAS computes on the calling thread: the
+// package's products then never wake OpenBLAS's own threads, and its OpenMP
+// teams do the parallel work (see `Single_threaded_blas_scope`).
 #ifdef CGAL_SSMD_USE_BLAS
 extern "C" void dgemm_(const char* transa, const char* transb, const int* m, const int* n,
                        const int* k, const double* alpha, const double* a, const int* lda,
@@ -33,7 +38,6 @@ extern "C" void dgemm_(const char* transa, const char* transb, const int* m, con
 #ifdef CGAL_SSMD_USE_OPENBLAS
 extern "C" int openblas_get_num_threads(void);
 extern "C" void openblas_set_num_threads(int);
-extern "C" int openblas_get_parallel(void);
 #endif
 
 namespace CGAL {
@@ -44,7 +48,22 @@ namespace Linear_algebra {
 typedef Eigen::Ref<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> Const_matrix_ref;
 typedef Eigen::Ref<Eigen::MatrixXd, 0, Eigen::OuterStride<>> Matrix_ref;
 
+// The largest product, in multiply-adds m·n·k, that OpenBLAS's dgemm
+// computes on the calling thread: above it, its threaded builds hand the
+// product to their own threads (`interface/gemm.c`: 65536 ×
+// GEMM_MULTITHREAD_THRESHOLD, 4 by default). Those threads then wait for
+// more work spinning on `sched_yield()` for some 0.1 s, beside the OpenMP
+// teams that run the package's other loops. Another BLAS is called in
+// pieces of the same size; only the speed can differ.
+constexpr double blas_piece_multiply_adds() { return 262144.0; }
+
 /// C = beta C + alpha op(A) op(B), op(X) = Xᵀ when the flag is set.
+///
+/// With a BLAS, the product is computed in pieces of at most
+/// `blas_piece_multiply_adds()`, over blocks of C and, for a long inner
+/// dimension, in consecutive slices of it accumulated in order: the pieces
+/// depend on the sizes only, so the rounding does not depend on OpenBLAS's
+/// thread count.
 inline void dense_product(bool transpose_a, const Const_matrix_ref& A, bool transpose_b,
                           const Const_matrix_ref& B, double alpha, double beta, Matrix_ref C)
 {
@@ -61,8 +80,41 @@ inline void dense_product(bool transpose_a, const Const_matrix_ref& A, bool tran
   const int depth = static_cast<int>(inner);
   const int lda = static_cast<int>(A.outerStride()), ldb = static_cast<int>(B.outerStride());
   const int ldc = static_cast<int>(C.outerStride());
-  dgemm_(transpose_a ? "T" : "N", transpose_b ? "T" : "N", &rows, &cols, &depth, &alpha, A.data(),
-         &lda, B.data(), &ldb, &beta, C.data(), &ldc);
+  // Pieces of up to 128 columns of C and 256 of the inner dimension, with as
+  // many rows as the limit allows, at least 16 (the inner slice shortens
+  // for them): shapes on which dgemm keeps most of its speed.
+  const double limit = blas_piece_multiply_adds();
+  const int column_block = (std::min)(cols, 128);
+  int depth_block = (std::min)(depth, 256);
+  int row_block = static_cast<int>(limit / (double(column_block) * depth_block));
+  const int minimum_rows = (std::min)(rows, 16);
+  if(row_block < minimum_rows)
+  {
+    depth_block = (std::max)(1, (std::min)(depth, static_cast<int>(limit / (double(column_block) * minimum_rows))));
+    row_block = (std::max)(1, static_cast<int>(limit / (double(column_block) * depth_block)));
+  }
+  const char* const op_a = transpose_a ? "T" : "N";
+  const char* const op_b = transpose_b ? "T" : "N";
+  for(int j = 0; j < cols; j += column_block)
+  {
+    const int piece_cols = (std::min)(column_block, cols - j);
+    for(int i = 0; i < rows; i += row_block)
+    {
+      const int piece_rows = (std::min)(row_block, rows - i);
+      double* const c = C.data() + i + std::ptrdiff_t(j) * ldc;
+      for(int l = 0; l < depth; l += depth_block)
+      {
+        const int piece_depth = (std::min)(depth_block, depth - l);
+        const double* const a = transpose_a ? A.data() + l + std::ptrdiff_t(i) * lda
+                                            : A.data() + i + std::ptrdiff_t(l) * lda;
+        const double* const b = transpose_b ? B.data() + j + std::ptrdiff_t(l) * ldb
+                                            : B.data() + l + std::ptrdiff_t(j) * ldb;
+        const double piece_beta = l == 0 ? beta : 1.0;
+        dgemm_(op_a, op_b, &piece_rows, &piece_cols, &piece_depth, &alpha, a, &lda, b, &ldb, &piece_beta, c,
+               &ldc);
+      }
+    }
+  }
 #else
   if(beta == 0)
     C.setZero();
@@ -79,44 +131,22 @@ inline void dense_product(bool transpose_a, const Const_matrix_ref& A, bool tran
 #endif
 }
 
-// Whether the linked BLAS runs threads of its own that wait for work by
-// spinning: OpenBLAS's pthreads build (the one Debian installs by default)
-// with more than one thread.
-inline bool blas_runs_spinning_threads()
-{
-#ifdef CGAL_SSMD_USE_OPENBLAS
-  constexpr int pthreads_build = 1;
-  return openblas_get_parallel() == pthreads_build && openblas_get_num_threads() > 1;
-#else
-  return false;
-#endif
-}
-
-// Gives the cores to one pool of threads for its lifetime: OpenBLAS's idle
-// threads wait for work spinning on `sched_yield()` for some 0.1 s after each
-// call, and OpenMP teams running beside them got a fraction of the cores,
-// their barriers waiting for threads that were not scheduled (a two-thread
-// sparse solve ran at one-thread speed; the exact basis of a 13,500-vertex
-// region took 1.2-2.7 s, against 0.6-0.7 s with either pool on one thread).
+// With `process_wide_tuning`, OpenBLAS runs on one thread for the lifetime
+// of the object, so that the BLAS calls of CHOLMOD (its supernodal
+// factorizations and solves) stay on the calling thread too and never wake
+// OpenBLAS's threads beside the OpenMP teams. The OpenBLAS thread count is a
+// setting of the whole process: other threads calling OpenBLAS meanwhile run
+// single-threaded too. The package does this only when a traits object was
+// asked to (`set_process_wide_tuning(true)`, see Memory/Process_wide_tuning.h).
+// The package's own products need none of it: `dense_product()` keeps them
+// on the calling thread whatever OpenBLAS's setting, and the OpenMP teams do
+// the parallel work.
 //
-// - With `process_wide_tuning`, OpenBLAS runs on one thread and the OpenMP
-//   teams do the parallel work (callers split their tall products with
-//   `threaded_dense_product()`; bound by memory, they gained little from
-//   OpenBLAS's threads). The OpenBLAS thread count is a setting of the whole
-//   process: other threads calling OpenBLAS meanwhile run single-threaded
-//   too. The package does this only when a traits object was asked to
-//   (`set_process_wide_tuning(true)`, see Memory/Process_wide_tuning.h).
-// - Otherwise, beside a BLAS with spinning threads, the OpenMP teams that
-//   the calling thread starts run on one thread and OpenBLAS keeps its
-//   threads for the dense products. Only the calling thread's setting
-//   changes (`nthreads-var` is a per-thread setting of OpenMP).
-//
-// Both settings are restored by the destructor.
-class Threads_for_blas_or_openmp
+// The setting is restored by the destructor.
+class Single_threaded_blas_scope
 {
 public:
-  explicit Threads_for_blas_or_openmp(bool process_wide_tuning)
-      : m_openmp(!process_wide_tuning && blas_runs_spinning_threads())
+  explicit Single_threaded_blas_scope(bool process_wide_tuning)
   {
 #ifdef CGAL_SSMD_USE_OPENBLAS
     if(process_wide_tuning)
@@ -125,65 +155,75 @@ public:
       if(m_blas_threads > 1)
         openblas_set_num_threads(1);
     }
+#else
+    (void)process_wide_tuning;
 #endif
   }
-  ~Threads_for_blas_or_openmp()
+  ~Single_threaded_blas_scope()
   {
 #ifdef CGAL_SSMD_USE_OPENBLAS
     if(m_blas_threads > 1)
       openblas_set_num_threads(m_blas_threads);
 #endif
   }
-  Threads_for_blas_or_openmp(const Threads_for_blas_or_openmp&) = delete;
-  Threads_for_blas_or_openmp& operator=(const Threads_for_blas_or_openmp&) = delete;
+  Single_threaded_blas_scope(const Single_threaded_blas_scope&) = delete;
+  Single_threaded_blas_scope& operator=(const Single_threaded_blas_scope&) = delete;
 
 private:
   int m_blas_threads = 0;
-  One_thread_scope m_openmp;
 };
 
 // dense_product() split over the OpenMP threads along the long dimension of
-// a tall product (the rows of C, or the inner dimension of AᵀB), for use
-// with a single-threaded BLAS.
+// a tall product (the rows of C, or the inner dimension of AᵀB), in pieces
+// of at least 8192 rows whose number depends on the sizes only: the partial
+// products of AᵀB are added in the order of their pieces, so that the result
+// is the same to the last bit whatever the number of threads.
 inline void threaded_dense_product(bool transpose_a, const Const_matrix_ref& A, bool transpose_b,
                                    const Const_matrix_ref& B, double alpha, double beta,
                                    Matrix_ref C)
 {
+  const Eigen::Index inner = transpose_a ? A.rows() : A.cols();
+  const Eigen::Index piece_rows = 8192;
 #ifdef _OPENMP
   const int threads = omp_in_parallel() ? 1 : (std::min)(omp_get_max_threads(), 8);
-  const Eigen::Index inner = transpose_a ? A.rows() : A.cols();
-  const Eigen::Index minimum_rows = 8192;
-  if(threads > 1 && !transpose_b && !transpose_a && C.rows() >= threads * minimum_rows)
+#endif
+  if(!transpose_b && !transpose_a && C.rows() >= 2 * piece_rows)
   {
-#pragma omp parallel for num_threads(threads)
-    for(int t = 0; t < threads; ++t)
+    const Eigen::Index pieces = C.rows() / piece_rows;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(static) if(threads > 1)
+#endif
+    for(Eigen::Index p = 0; p < pieces; ++p)
     {
-      const Eigen::Index first = C.rows() * t / threads, last = C.rows() * (t + 1) / threads;
+      const Eigen::Index first = C.rows() * p / pieces, last = C.rows() * (p + 1) / pieces;
       dense_product(false, A.middleRows(first, last - first), false, B, alpha, beta,
                     C.middleRows(first, last - first));
     }
     return;
   }
-  if(threads > 1 && transpose_a && !transpose_b && inner >= threads * minimum_rows)
+  if(transpose_a && !transpose_b && inner >= 2 * piece_rows)
   {
-    std::vector<Eigen::MatrixXd> partial(static_cast<std::size_t>(threads));
-#pragma omp parallel for num_threads(threads)
-    for(int t = 0; t < threads; ++t)
+    const Eigen::Index pieces = inner / piece_rows;
+    std::vector<Eigen::MatrixXd> partial(static_cast<std::size_t>(pieces));
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(static) if(threads > 1)
+#endif
+    for(Eigen::Index p = 0; p < pieces; ++p)
     {
-      const Eigen::Index first = inner * t / threads, last = inner * (t + 1) / threads;
-      partial[t].resize(C.rows(), C.cols());
-      dense_product(true, A.middleRows(first, last - first), false,
-                    B.middleRows(first, last - first), 1.0, 0.0, partial[t]);
+      const Eigen::Index first = inner * p / pieces, last = inner * (p + 1) / pieces;
+      Eigen::MatrixXd& part = partial[static_cast<std::size_t>(p)];
+      part.resize(C.rows(), C.cols());
+      dense_product(true, A.middleRows(first, last - first), false, B.middleRows(first, last - first), 1.0,
+                    0.0, part);
     }
-    for(int t = 1; t < threads; ++t)
-      partial[0] += partial[t];
+    for(Eigen::Index p = 1; p < pieces; ++p)
+      partial[0] += partial[static_cast<std::size_t>(p)];
     if(beta == 0)
       C = alpha * partial[0];
     else
       C = beta * C + alpha * partial[0];
     return;
   }
-#endif
   dense_product(transpose_a, A, transpose_b, B, alpha, beta, C);
 }
 

@@ -169,15 +169,18 @@ public:
 
   // Overwrites y (n rows of W values, stored row after row) with
   // (L Lᵀ)^{-1} y; `starts`, `rows` as given to analyze(), `values` the
-  // entries of L.
+  // entries of L. With `parallel`, the two subtrees are solved on two
+  // threads, otherwise one after the other: the same operations in the same
+  // order, so the same result to the last bit.
   template <int W>
-  void solve(const int* starts, const int* rows, const double* values, double* y) const
+  void solve(const int* starts, const int* rows, const double* values, double* y, bool parallel) const
   {
+    (void)parallel; // without OpenMP
     const std::size_t top_size = m_top.size();
     const int* const ends = m_ends.data();
     std::vector<double> top_updates[number_of_subtrees];
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(number_of_subtrees) schedule(static, 1)
+#pragma omp parallel for num_threads(number_of_subtrees) schedule(static, 1) if(parallel)
 #endif
     for(int thread = 0; thread < number_of_subtrees; ++thread)
     {
@@ -237,7 +240,7 @@ public:
     for(auto j = m_top.rbegin(); j != m_top.rend(); ++j)
       backward(*j);
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(number_of_subtrees) schedule(static, 1)
+#pragma omp parallel for num_threads(number_of_subtrees) schedule(static, 1) if(parallel)
 #endif
     for(int thread = 0; thread < number_of_subtrees; ++thread)
       for(auto j = m_columns[thread].rbegin(); j != m_columns[thread].rend(); ++j)
@@ -246,11 +249,13 @@ public:
 
   // X = A^{-1} B for A = P L Lᵀ Pᵀ, row k of A being row position[k] of
   // L: eight right-hand sides at a time (fewer for the last ones), permuted
-  // into rows of `work` and solved by solve().
+  // into rows of `work` and solved by solve(), on two threads with
+  // `parallel`.
   void solve_permuted(const int* starts, const int* rows, const double* values,
                       const int* position, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
-                      std::vector<double>& work) const
+                      std::vector<double>& work, bool parallel) const
   {
+    (void)parallel; // without OpenMP
     const Eigen::Index n = B.rows();
     for(Eigen::Index first = 0; first < B.cols();)
     {
@@ -262,7 +267,7 @@ public:
       // threads: on one thread these copies were a large part of the solve.
       double* const y = work.data();
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(parallel)
 #endif
       for(Eigen::Index k = 0; k < n; ++k)
       {
@@ -274,13 +279,13 @@ public:
       }
       switch(width)
       {
-      case 8: solve<8>(starts, rows, values, y); break;
-      case 4: solve<4>(starts, rows, values, y); break;
-      case 2: solve<2>(starts, rows, values, y); break;
-      default: solve<1>(starts, rows, values, y); break;
+      case 8: solve<8>(starts, rows, values, y, parallel); break;
+      case 4: solve<4>(starts, rows, values, y, parallel); break;
+      case 2: solve<2>(starts, rows, values, y, parallel); break;
+      default: solve<1>(starts, rows, values, y, parallel); break;
       }
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(parallel)
 #endif
       for(Eigen::Index k = 0; k < n; ++k)
       {
