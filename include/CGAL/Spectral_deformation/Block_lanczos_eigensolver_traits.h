@@ -78,14 +78,15 @@ namespace CGAL {
 ///   threads; with the default CHOLMOD simplicial factor, each solve is
 ///   split between two threads too, by subtrees of the elimination tree
 ///   (see `Cholmod_llt_solver_traits::solves_in_subtrees()`).
-///   `OMP_NUM_THREADS=1` makes the whole method sequential. Beside an
-///   OpenBLAS that runs threads of its own (its pthreads build, Debian's
-///   default, with more than one thread) and without
-///   `set_process_wide_tuning()`, the method keeps the OpenMP teams it
-///   starts to one thread and leaves the parallel work to OpenBLAS: the
-///   idle OpenBLAS threads spin between calls and took the cores from the
-///   teams (up to 2-3 times slower). Only the calling thread's OpenMP
-///   setting changes, and only while `compute()` runs.
+///   `OMP_NUM_THREADS=1` makes the whole method sequential. With the
+///   default solver traits the result does not depend on the number of
+///   OpenMP threads, to the last bit: the partial sums come in pieces fixed
+///   by the sizes, added in order, and on one thread the solves by subtrees
+///   run one subtree after the other. The dense products call the BLAS in pieces of at most 2¹⁸
+///   multiply-adds, which OpenBLAS computes on the calling thread: they
+///   never wake the threads of an OpenBLAS that runs threads of its own
+///   (its pthreads build, Debian's default), whose idle threads spin
+///   between calls and took the cores from the OpenMP teams.
 ///
 /// Some of its speed comes from settings of the whole process, which
 /// `compute()` changes only after `set_process_wide_tuning(true)`: by
