@@ -37,6 +37,7 @@ CGAL_SSMD_CORE_FUNCTION Eigen::MatrixXd ritz_vectors_with_gram(Eigen::MatrixXd& 
   const Eigen::Index n = V.rows(), known = known_vectors.cols(), wanted = S.cols();
   const Eigen::Index panel = ritz_panel_rows(), panels = (n + panel - 1) / panel;
   const int threads = ritz_vector_threads();
+  (void)threads; // without OpenMP
   // The Gram matrix is summed in groups of consecutive panels whose number
   // depends on the sizes only, then group after group: the same result
   // whatever the number of threads.
