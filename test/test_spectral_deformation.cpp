@@ -25,6 +25,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <random>
 #include <set>
 #include <sstream>
 
@@ -1227,6 +1228,62 @@ TEST_CASE("the dual rows and the vertices are grouped from one grouping of the f
       vertex_ids.insert(entry.second);
     CHECK(vertex_ids.size() == vertex_id.size()); // one vertex patch per patch of faces
   }
+}
+
+TEST_CASE("farthest point sampling by cells takes the points of the plain loop over all points", "[patches]")
+{
+  typedef internal::Deformation::Farthest_point_sampler Sampler;
+  // The definition: each point taken is the first of the farthest from
+  // those taken so far, until the farthest is at distance 0.
+  auto plain = [](const Sampler::Points& points, std::size_t count) {
+    std::vector<double> distance(static_cast<std::size_t>(points.rows()), std::numeric_limits<double>::infinity());
+    std::vector<int> taken;
+    int next = 0;
+    while(taken.size() < count && points.rows() > 0)
+    {
+      taken.push_back(next);
+      const Eigen::RowVector3d p = points.row(next);
+      double farthest = -1;
+      for(Eigen::Index i = 0; i < points.rows(); ++i)
+      {
+        double& d = distance[static_cast<std::size_t>(i)];
+        d = (std::min)(d, (points.row(i) - p).squaredNorm());
+        if(d > farthest)
+        {
+          farthest = d;
+          next = static_cast<int>(i);
+        }
+      }
+      if(!(farthest > 0))
+        break;
+    }
+    return taken;
+  };
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  std::vector<std::pair<std::string, Sampler::Points>> sets;
+  auto make = [&](const std::string& name, Eigen::Index n, auto&& point) {
+    Sampler::Points points(n, 3);
+    for(Eigen::Index i = 0; i < n; ++i)
+      points.row(i) = point(i);
+    sets.emplace_back(name, points);
+  };
+  make("a cube of random points", 3000, [&](Eigen::Index) { return Eigen::RowVector3d(uniform(random), uniform(random), uniform(random)); });
+  make("a sphere", 4000, [&](Eigen::Index) { return Eigen::RowVector3d(uniform(random), uniform(random), uniform(random)).normalized().eval(); });
+  make("a flat grid with ties", 2500, [&](Eigen::Index i) { return Eigen::RowVector3d(double(i % 50), double(i / 50), 0.0); });
+  make("a line", 1000, [&](Eigen::Index i) { return Eigen::RowVector3d(1e-3 * double(i), 0.0, 0.0); });
+  make("far apart scales", 2000, [&](Eigen::Index i) {
+    return Eigen::RowVector3d(i < 1000 ? 1e-6 * uniform(random) : 1e3 + uniform(random), uniform(random), 0.0);
+  });
+  make("repeated points", 600, [&](Eigen::Index i) { return Eigen::RowVector3d(double(i % 3), 0.0, double(i % 2)); });
+  make("one point many times", 50, [&](Eigen::Index) { return Eigen::RowVector3d(0.5, 0.5, 0.5); });
+  for(const auto& [name, points] : sets)
+    for(std::size_t count : {1, 2, 17, 300, 5000})
+    {
+      INFO(name << ", " << count << " points asked for");
+      CHECK(Sampler(points).sample(count) == plain(points, count));
+    }
+  CHECK(Sampler(Sampler::Points(0, 3)).sample(10).empty());
 }
 
 TEST_CASE("rotation patches grow by distance along the surface, not by the number of faces", "[patches]")

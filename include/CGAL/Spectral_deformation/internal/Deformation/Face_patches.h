@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -29,43 +30,171 @@ using Mesh::Dual_mesh_operator;
 using Mesh::Positions;
 using Mesh::Triangles;
 
+/// The farthest point sampling of `points` (rows), started at row 0: each
+/// point taken is the one farthest from those taken before (the first of
+/// equally far ones), until `count` are taken or the farthest is at
+/// distance 0.
+///
+/// Each new point lowers the distance only of the points closer to it than
+/// the largest distance so far, so it visits only the cells of a grid
+/// within that radius, and a heap of (distance, index) entries finds the
+/// next point. A sampling of thousands of seeds then reads each point a few
+/// times instead of once per seed. (CGAL has no farthest point sampling of
+/// points, and a k-d tree would not bound which distances change.) The
+/// distances and ties are those of the plain loop over all points, so the
+/// same points are taken.
+class Farthest_point_sampler
+{
+public:
+  typedef Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> Points;
+
+  explicit Farthest_point_sampler(Points points) : m_points(std::move(points))
+  {
+    const Eigen::Index n = m_points.rows();
+    if(n == 0)
+      return;
+    m_low = m_points.colwise().minCoeff();
+    const Eigen::RowVector3d extent = m_points.colwise().maxCoeff() - m_low;
+    // About two cells per point on a surface of the box's size; a flat or
+    // thin set of points keeps at least a thousandth of the diagonal per
+    // axis, so the cells stay few.
+    const double floor = (std::max)(1e-3 * extent.norm(), std::numeric_limits<double>::min());
+    const Eigen::RowVector3d sides = extent.cwiseMax(floor);
+    const double cell = std::cbrt(sides.prod() / (4.0 * static_cast<double>(n)));
+    if(cell > 0 && std::isfinite(cell)) // else one cell: the points coincide
+    {
+      m_cell = cell;
+      for(int d = 0; d < 3; ++d)
+        m_dims[d] = static_cast<int>(std::min<double>(sides[d] / m_cell, 4.0 * static_cast<double>(n))) + 1;
+    }
+    const std::size_t cells =
+        static_cast<std::size_t>(m_dims[0]) * static_cast<std::size_t>(m_dims[1]) * static_cast<std::size_t>(m_dims[2]);
+    // The points sorted by cell (a counting sort), with their coordinates
+    // side by side in that order.
+    std::vector<std::size_t> cell_of(static_cast<std::size_t>(n));
+    m_first.assign(cells + 1, 0);
+    for(Eigen::Index i = 0; i < n; ++i)
+    {
+      cell_of[static_cast<std::size_t>(i)] = cell_index(m_points.row(i));
+      ++m_first[cell_of[static_cast<std::size_t>(i)] + 1];
+    }
+    for(std::size_t c = 1; c <= cells; ++c)
+      m_first[c] += m_first[c - 1];
+    m_order.resize(static_cast<std::size_t>(n));
+    std::vector<int> fill(m_first.begin(), m_first.end() - 1);
+    for(Eigen::Index i = 0; i < n; ++i)
+      m_order[static_cast<std::size_t>(fill[cell_of[static_cast<std::size_t>(i)]]++)] = static_cast<int>(i);
+  }
+
+  /// The indices of the points taken, in the order they were taken.
+  std::vector<int> sample(std::size_t count) const
+  {
+    const std::size_t n = static_cast<std::size_t>(m_points.rows());
+    std::vector<int> taken;
+    if(n == 0 || count == 0)
+      return taken;
+    taken.reserve(count);
+    std::vector<double> distance(n, std::numeric_limits<double>::infinity());
+    // Entries (distance, -index): the largest is the farthest point and,
+    // among equally far ones, the first. An entry whose distance is no
+    // longer the point's is stale and dropped when it comes up.
+    typedef std::pair<double, int> Entry;
+    std::vector<Entry> heap;
+    int next = 0;
+    for(std::size_t s = 0; s < count; ++s)
+    {
+      taken.push_back(next);
+      const Eigen::RowVector3d p = m_points.row(next);
+      if(s == 0)
+      {
+        for(std::size_t i = 0; i < n; ++i)
+          distance[i] = (m_points.row(static_cast<Eigen::Index>(i)) - p).squaredNorm();
+        heap.reserve(2 * n);
+        for(std::size_t i = 0; i < n; ++i)
+          heap.emplace_back(distance[i], -static_cast<int>(i));
+        std::make_heap(heap.begin(), heap.end());
+      }
+      else
+      {
+        // No distance exceeds the new point's, so only points within that
+        // radius of it can come closer (one cell more for rounding).
+        const double radius = std::sqrt(distance[static_cast<std::size_t>(next)]);
+        int low[3], high[3];
+        for(int d = 0; d < 3; ++d)
+        {
+          low[d] = (std::max)(0, cell_coordinate(p[d] - radius, d) - 1);
+          high[d] = (std::min)(m_dims[d] - 1, cell_coordinate(p[d] + radius, d) + 1);
+        }
+        for(int x = low[0]; x <= high[0]; ++x)
+          for(int y = low[1]; y <= high[1]; ++y)
+          {
+            const std::size_t row = (static_cast<std::size_t>(x) * static_cast<std::size_t>(m_dims[1]) +
+                                     static_cast<std::size_t>(y)) *
+                                    static_cast<std::size_t>(m_dims[2]);
+            for(int k = m_first[row + static_cast<std::size_t>(low[2])];
+                k < m_first[row + static_cast<std::size_t>(high[2]) + 1]; ++k)
+            {
+              const int i = m_order[static_cast<std::size_t>(k)];
+              const double d = (m_points.row(i) - p).squaredNorm();
+              if(d < distance[static_cast<std::size_t>(i)])
+              {
+                distance[static_cast<std::size_t>(i)] = d;
+                heap.emplace_back(d, -i);
+                std::push_heap(heap.begin(), heap.end());
+              }
+            }
+          }
+      }
+      while(heap.front().first != distance[static_cast<std::size_t>(-heap.front().second)])
+      {
+        std::pop_heap(heap.begin(), heap.end());
+        heap.pop_back();
+      }
+      if(!(heap.front().first > 0))
+        break;
+      next = -heap.front().second;
+    }
+    return taken;
+  }
+
+private:
+  int cell_coordinate(double x, int d) const
+  {
+    const double c = std::floor((x - m_low[d]) / m_cell);
+    return static_cast<int>(std::clamp(c, -1.0, static_cast<double>(m_dims[d])));
+  }
+
+  std::size_t cell_index(const Eigen::RowVector3d& p) const
+  {
+    std::size_t index = 0;
+    for(int d = 0; d < 3; ++d)
+      index = index * static_cast<std::size_t>(m_dims[d]) +
+              static_cast<std::size_t>(std::clamp(cell_coordinate(p[d], d), 0, m_dims[d] - 1));
+    return index;
+  }
+
+  Points m_points;
+  Eigen::RowVector3d m_low = Eigen::RowVector3d::Zero();
+  double m_cell = 1;
+  int m_dims[3] = {1, 1, 1};
+  std::vector<int> m_first, m_order;
+};
+
 /// About `count` faces spread over the surface: farthest point sampling of
-/// the face `centroids` over a regular subsample of the faces, so that the
-/// cost stays count × candidates whatever the size of the mesh.
+/// the face `centroids` over a regular subsample of the faces (32 per
+/// seed), so that the cost does not grow with the size of the mesh.
 inline std::vector<int> farthest_point_seeds(const Positions& centroids, std::size_t faces, std::size_t count)
 {
   const std::size_t candidate_count = (std::min)(faces, 32 * count);
+  if(candidate_count == 0)
+    return {};
   const std::size_t stride = faces / candidate_count;
-  std::vector<int> candidates(candidate_count);
-  // The candidates' centroids side by side: every seed reads all of them.
-  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> points(static_cast<Eigen::Index>(candidate_count), 3);
+  Farthest_point_sampler::Points points(static_cast<Eigen::Index>(candidate_count), 3);
   for(std::size_t i = 0; i < candidate_count; ++i)
-  {
-    candidates[i] = static_cast<int>(i * stride);
-    points.row(static_cast<Eigen::Index>(i)) = centroids.row(candidates[i]);
-  }
-  std::vector<double> distance(candidate_count, std::numeric_limits<double>::infinity());
-  std::vector<int> seeds;
-  seeds.reserve(count);
-  std::size_t next = 0;
-  for(std::size_t s = 0; s < count; ++s)
-  {
-    const int seed = candidates[next];
-    seeds.push_back(seed);
-    const Eigen::RowVector3d p = centroids.row(seed);
-    double farthest = -1;
-    for(std::size_t i = 0; i < candidate_count; ++i)
-    {
-      distance[i] = (std::min)(distance[i], (points.row(static_cast<Eigen::Index>(i)) - p).squaredNorm());
-      if(distance[i] > farthest)
-      {
-        farthest = distance[i];
-        next = i;
-      }
-    }
-    if(!(farthest > 0))
-      break;
-  }
+    points.row(static_cast<Eigen::Index>(i)) = centroids.row(static_cast<Eigen::Index>(i * stride));
+  std::vector<int> seeds = Farthest_point_sampler(std::move(points)).sample(count);
+  for(int& seed : seeds)
+    seed *= static_cast<int>(stride);
   return seeds;
 }
 

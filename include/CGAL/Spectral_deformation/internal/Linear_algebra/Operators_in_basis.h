@@ -8,6 +8,7 @@
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_LINEAR_ALGEBRA_OPERATORS_IN_BASIS_H
 
 #include <CGAL/Spectral_deformation/internal/available_threads.h>
+#include <CGAL/Spectral_deformation/internal/Linear_algebra/Dense_products.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Sparse_times_dense.h>
 
 #include <Eigen/Core>
@@ -89,7 +90,17 @@ void sparse_in_basis(const Eigen::SparseMatrix<double>& A,
   for_each_column_block_product(A, H, [&result, &H, m](Eigen::Index first, Eigen::Index width, const auto& buffer) {
     auto lower = result.block(first, first, m - first, width);
     if constexpr(std::is_same<Scalar, double>::value)
+    {
+#ifdef CGAL_SSMD_USE_BLAS
+      // The row-major n × 8 buffer is the column-major 8 × n matrix of its
+      // transpose.
+      const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> transposed(
+          buffer.data(), buffer.cols(), buffer.rows(), Eigen::OuterStride<>(buffer.cols()));
+      dense_product(true, H.rightCols(m - first), true, transposed.topRows(width), 1.0, 0.0, lower);
+#else
       lower.noalias() = H.rightCols(m - first).transpose() * buffer.leftCols(width);
+#endif
+    }
     else
     {
       constexpr Eigen::Index block_rows = 4096;
