@@ -43,6 +43,11 @@ constexpr std::ptrdiff_t parallel_operator_entries = 200000;
 /// Products of a sparse matrix by the basis, non-zeros × m, from this many
 /// multiply-adds (a few nanoseconds each).
 constexpr std::ptrdiff_t parallel_sparse_products = 1000000;
+/// Triangular solves with a sparse factor of this many non-zeros, for
+/// several columns, run on all threads, a block of columns each (the
+/// eigenvectors of the approximate basis's reduced problem: 100 columns, a
+/// factor of about 450,000 non-zeros for m = 100).
+constexpr std::ptrdiff_t parallel_sparse_solve_entries = 100000;
 
 /// Regions of interest with fewer vertices are prepared (`preprocess()`:
 /// the region, its basis, the first factorizations) with the calling
