@@ -645,7 +645,7 @@ TEST_CASE("a basis kept in float: the deformation of the double one, rigid motio
   };
 
   Spectral reference(reference_mesh);
-  CHECK(reference.single_precision_basis_threshold() == 200000);
+  CHECK(reference.single_precision_basis_threshold() == 20000);
   set_up(reference_mesh, reference, reference.single_precision_basis_threshold());
   const Eigen::MatrixXd in_double = bend(reference_mesh, reference);
   CHECK_FALSE(reference.preprocess_report().single_precision_basis); // 16 × 3 bar: below the threshold

@@ -236,7 +236,7 @@ progress : callable, optional
     ssmd.progress_bar).
 single_precision_basis_threshold : int, optional
     Regions of at least this many vertices keep their basis in float, half
-    the memory (None: 200000; 0: always).
+    the memory (None: 20000; 0: always).
 
 Raises
 ------

@@ -298,7 +298,7 @@ inline Command_line_options parse_command_line(int argc, const char* const* argv
       }));
   app.add_option("--single-precision-threshold", options.single_precision_threshold,
                  "the number of region vertices from which the basis is kept in float, half the "
-                 "memory (default: the library's, 200000; 0: always).")
+                 "memory (default: the library's, 20000; 0: always).")
       ->option_text("N")
       ->check(internal::expects("--single-precision-threshold", "an integer of at least 0",
                                 [](const std::string& v) {

@@ -101,7 +101,7 @@ public:
   }
 
   /// The number of vertices from which a region keeps its basis in single
-  /// precision (default 200,000).
+  /// precision (default 20,000).
   std::size_t single_precision_basis_threshold() const
   {
     return computation().settings().single_precision_basis_threshold;

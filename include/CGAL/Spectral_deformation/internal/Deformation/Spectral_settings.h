@@ -33,7 +33,7 @@ struct Spectral_settings
   bool preserve_volume = false;             // the detail transfer keeps the enclosed volume
 
   static constexpr std::size_t default_rotation_patches = 1000;
-  static constexpr std::size_t default_single_precision_basis_threshold = 200000;
+  static constexpr std::size_t default_single_precision_basis_threshold = 20000;
   static constexpr double default_stage_angle = 3.14159265358979323846 / 6;
 };
 
