@@ -39,10 +39,10 @@ using Mesh::Triangles;
 /// the largest distance so far, so it visits only the cells of a grid
 /// within that radius, and a heap of (distance, index) entries finds the
 /// next point. A sampling of thousands of seeds then reads each point a few
-/// times instead of once per seed. (CGAL has no farthest point sampling of
-/// points, and a k-d tree would not bound which distances change.) The
-/// distances and ties are those of the plain loop over all points, so the
-/// same points are taken.
+/// times instead of once per seed. (Neither CGAL nor Eigen samples points
+/// by farthest point sampling; a grid of cells is all the search needs.)
+/// The distances and ties are those of the plain loop over all points, so
+/// the same points are taken.
 class Farthest_point_sampler
 {
 public:
@@ -55,9 +55,9 @@ public:
       return;
     m_low = m_points.colwise().minCoeff();
     const Eigen::RowVector3d extent = m_points.colwise().maxCoeff() - m_low;
-    // About two cells per point on a surface of the box's size; a flat or
-    // thin set of points keeps at least a thousandth of the diagonal per
-    // axis, so the cells stay few.
+    // Cubic cells, about 4 n of them in the bounding box; a flat or thin
+    // set of points counts at least a thousandth of the diagonal per axis,
+    // so that the cells stay few.
     const double floor = (std::max)(1e-3 * extent.norm(), std::numeric_limits<double>::min());
     const Eigen::RowVector3d sides = extent.cwiseMax(floor);
     const double cell = std::cbrt(sides.prod() / (4.0 * static_cast<double>(n)));
@@ -69,8 +69,8 @@ public:
     }
     const std::size_t cells =
         static_cast<std::size_t>(m_dims[0]) * static_cast<std::size_t>(m_dims[1]) * static_cast<std::size_t>(m_dims[2]);
-    // The points sorted by cell (a counting sort), with their coordinates
-    // side by side in that order.
+    // The indices of the points sorted by cell (a counting sort): the
+    // points of a run of cells along the last axis are consecutive.
     std::vector<std::size_t> cell_of(static_cast<std::size_t>(n));
     m_first.assign(cells + 1, 0);
     for(Eigen::Index i = 0; i < n; ++i)
