@@ -7,6 +7,7 @@
 #include <CGAL/Spectral_deformation/Spectra_eigensolver_traits.h>
 #include <CGAL/Spectral_deformation/cotangent_operators.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Eigenvalue_count.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Single_vector_lanczos.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Dense_products.h>
 #include <CGAL/Spectral_deformation/internal/Linear_algebra/Dirichlet_system.h>
 
@@ -280,7 +281,7 @@ TEST_CASE("small problems: the single-vector method checked by an eigenvalue cou
           "[basis][block_lanczos]")
 {
   // 642 vertices, above the default dense threshold: the default traits run
-  // Spectra's single-vector Lanczos and count the eigenvalues below the
+  // the single-vector Lanczos method and count the eigenvalues below the
   // largest one it found. The sphere's eigenvalues come in clusters of 2l + 1
   // (split a little by the icosahedral symmetry), whose copies the single
   // vector method can miss: whatever it returns, the result must be the
@@ -299,12 +300,14 @@ TEST_CASE("small problems: the single-vector method checked by an eigenvalue cou
     Eigen::MatrixXd dense_vectors, vectors;
     std::string message;
     REQUIRE(Eigensolvers::dense_generalized_eigenpairs(Q, mass, m, dense_values, dense_vectors, message));
-    bool reference_reported = false;
+    // The single-vector method reports a subspace of one vector first,
+    // which a block of the block method never is.
+    bool single_vector_reported = false;
     defaults.set_progress_callback([&](const CGAL::Block_lanczos_eigensolver_traits<>::Progress& p) {
-      reference_reported = reference_reported || p.stage == p.REFERENCE_SOLVE;
+      single_vector_reported = single_vector_reported || (p.stage == p.ITERATION && p.subspace_dimension == 1);
     });
     REQUIRE(defaults.compute(Q, mass, m, values, vectors));
-    CHECK(reference_reported);
+    CHECK(single_vector_reported);
     CHECK((values - dense_values).cwiseAbs().maxCoeff() < 1e-8 * dense_values.maxCoeff());
     // Whole clusters: l <= 2 (9 functions) for m = 10, l <= 5 (36) for
     // m = 40, l <= 8 (81) for m = 100.
@@ -334,6 +337,132 @@ TEST_CASE("small problems: the single-vector method checked by an eigenvalue cou
   CHECK(defaults.uses_checked_single_vector(3900, 100));
   CHECK_FALSE(defaults.uses_checked_single_vector(642, 200));
   CHECK_FALSE(defaults.uses_checked_single_vector(defaults.dense_threshold(), 10));
+}
+
+TEST_CASE("largest tridiagonal eigenpairs: those of Eigen's dense solver", "[basis][block_lanczos]")
+{
+  // A Lanczos matrix's shape: a positive diagonal decreasing with noise,
+  // couplings smaller than it; simple eigenvalues.
+  std::mt19937 generator(11);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  namespace E = CGAL::Spectral_deformation::internal::Eigensolvers;
+  for(const Eigen::Index k : {Eigen::Index(1), Eigen::Index(2), Eigen::Index(37), Eigen::Index(240)})
+  {
+    INFO("k = " << k);
+    Eigen::VectorXd diagonal(k), subdiagonal = Eigen::VectorXd::Zero(k);
+    for(Eigen::Index i = 0; i < k; ++i)
+      diagonal[i] = 1.0 / (1.0 + double(i)) + 0.1 * uniform(generator);
+    for(Eigen::Index i = 0; i + 1 < k; ++i)
+      subdiagonal[i] = 0.05 * uniform(generator);
+    Eigen::MatrixXd T = diagonal.asDiagonal();
+    for(Eigen::Index i = 0; i + 1 < k; ++i)
+      T(i + 1, i) = T(i, i + 1) = subdiagonal[i];
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> reference(T);
+    const Eigen::Index count = (std::min)(k, Eigen::Index(30));
+    Eigen::VectorXd values;
+    Eigen::MatrixXd vectors;
+    REQUIRE(E::largest_tridiagonal_eigenpairs(diagonal, subdiagonal, count, values, vectors));
+    REQUIRE(values.size() == count);
+    REQUIRE(vectors.rows() == k);
+    REQUIRE(vectors.cols() == count);
+    CHECK((values - reference.eigenvalues().tail(count)).cwiseAbs().maxCoeff() < 1e-13);
+    CHECK((T * vectors - vectors * values.asDiagonal()).cwiseAbs().maxCoeff() < 1e-12);
+    CHECK((vectors.transpose() * vectors - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff() <
+          1e-12);
+  }
+  Eigen::VectorXd values;
+  Eigen::MatrixXd vectors;
+  CHECK_FALSE(E::largest_tridiagonal_eigenpairs(Eigen::VectorXd::Ones(4), Eigen::VectorXd::Zero(4), 5, values,
+                                                vectors));
+}
+
+TEST_CASE("single-vector Lanczos: the dense solver's pairs, the constants deflated, a clear failure when the "
+          "subspace is too small",
+          "[basis][block_lanczos]")
+{
+  namespace E = CGAL::Spectral_deformation::internal::Eigensolvers;
+  auto ignore = [](Eigen::Index) {};
+  // A bumpy plane (961 vertices, a boundary): simple eigenvalues.
+  {
+    const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(30));
+    const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
+    const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(mesh).diagonal();
+    const Eigen::Index m = 60;
+    Eigen::VectorXd dense_values, values;
+    Eigen::MatrixXd dense_vectors, vectors;
+    std::string message;
+    REQUIRE(E::dense_generalized_eigenpairs(Q, mass, m, dense_values, dense_vectors, message));
+    E::Single_vector_lanczos_settings settings;
+    settings.max_dimension = 8 * m;
+    settings.tolerance = 1e-10;
+    Eigen::Index largest_subspace = 0, checks = 0, last_converged = 0;
+    REQUIRE(E::single_vector_lanczos_eigenpairs<CGAL::Default_eigensolver_sparse_spd_solver_traits>(
+        Q, mass, m, settings, [&](Eigen::Index k) { largest_subspace = k; },
+        [&](Eigen::Index converged) {
+          ++checks;
+          last_converged = converged;
+        },
+        values, vectors, message));
+    CHECK(message.empty());
+    CHECK(last_converged == m);
+    CHECK(checks >= 1);
+    CHECK(largest_subspace > m);
+    CHECK(largest_subspace < 4 * m);
+    CHECK(values[0] == 0.0);
+    CHECK((values - dense_values).tail(m - 1).cwiseQuotient(dense_values.tail(m - 1)).cwiseAbs().maxCoeff() <
+          1e-10);
+    const Eigen::MatrixXd gram = vectors.transpose() * mass.asDiagonal() * vectors;
+    CHECK((gram - Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff() < 1e-12);
+    // Each eigenvector is the dense solver's, up to its sign.
+    for(Eigen::Index i = 0; i < m; ++i)
+    {
+      INFO("eigenvector " << i);
+      const double cosine = dense_vectors.col(i).dot(mass.asDiagonal() * vectors.col(i));
+      CHECK(std::abs(cosine) > 1.0 - 1e-8);
+    }
+    // The same start, the same result.
+    Eigen::VectorXd again_values;
+    Eigen::MatrixXd again_vectors;
+    REQUIRE(E::single_vector_lanczos_eigenpairs<CGAL::Default_eigensolver_sparse_spd_solver_traits>(
+        Q, mass, m, settings, ignore, ignore, again_values, again_vectors, message));
+    CHECK(again_values == values);
+    CHECK(again_vectors == vectors);
+
+    // Too small a subspace: a failure with its reason, never a partial result.
+    settings.max_dimension = m + 5;
+    Eigen::VectorXd untouched_values = Eigen::VectorXd::Constant(3, 7.0);
+    message.clear();
+    CHECK_FALSE(E::single_vector_lanczos_eigenpairs<CGAL::Default_eigensolver_sparse_spd_solver_traits>(
+        Q, mass, m, settings, ignore, ignore, untouched_values, again_vectors, message));
+    CHECK(message.find("did not converge") != std::string::npos);
+    CHECK(untouched_values == Eigen::VectorXd::Constant(3, 7.0));
+  }
+  // Two spheres: the constant of each one returned as an eigenvector of 0,
+  // the rest from the Krylov subspace orthogonal to them.
+  {
+    const Surface_mesh spheres = to_mesh<Surface_mesh>(two_spheres(3));
+    const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(spheres);
+    const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(spheres).diagonal();
+    E::Single_vector_lanczos_settings settings;
+    settings.max_dimension = 200;
+    Eigen::VectorXd values;
+    Eigen::MatrixXd vectors;
+    std::string message;
+    REQUIRE(E::single_vector_lanczos_eigenpairs<CGAL::Default_eigensolver_sparse_spd_solver_traits>(
+        Q, mass, 12, settings, ignore, ignore, values, vectors, message));
+    CHECK(values[0] == 0.0);
+    CHECK(values[1] == 0.0);
+    CHECK(values[2] > 1.0);
+    CHECK((Q * vectors.leftCols(2)).cwiseAbs().maxCoeff() < 1e-12);
+    const Eigen::MatrixXd gram = vectors.transpose() * mass.asDiagonal() * vectors;
+    CHECK((gram - Eigen::MatrixXd::Identity(12, 12)).cwiseAbs().maxCoeff() < 1e-12);
+    // Only the constants wanted: no iteration at all.
+    bool solved = false;
+    REQUIRE(E::single_vector_lanczos_eigenpairs<CGAL::Default_eigensolver_sparse_spd_solver_traits>(
+        Q, mass, 2, settings, [&](Eigen::Index) { solved = true; }, ignore, values, vectors, message));
+    CHECK_FALSE(solved);
+    CHECK(values == Eigen::VectorXd::Zero(2));
+  }
 }
 
 TEST_CASE("the eigenvalue count finds a missing copy, and accepts any copies of the largest eigenvalue",
@@ -462,7 +591,8 @@ extern "C" int openblas_get_num_threads(void);
 TEST_CASE("block Lanczos: settings of the process change only on request",
           "[basis][block_lanczos]")
 {
-  // 1681 vertices: the block method runs (above the dense threshold).
+  // 1681 vertices: the block method runs (above the dense threshold, the
+  // checked single-vector method of small problems disabled).
   const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(40));
   const Eigen::SparseMatrix<double> Q = CGAL::cotangent_stiffness_matrix(mesh);
   const Eigen::VectorXd mass = CGAL::lumped_mass_matrix(mesh).diagonal();
@@ -473,6 +603,7 @@ TEST_CASE("block Lanczos: settings of the process change only on request",
   {
     INFO("process-wide tuning " << tuning);
     Traits block;
+    block.set_checked_single_vector(false);
     CHECK_FALSE(block.process_wide_tuning());
     block.set_process_wide_tuning(tuning == 1);
     CHECK(block.process_wide_tuning() == (tuning == 1));

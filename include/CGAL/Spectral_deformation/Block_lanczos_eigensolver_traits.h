@@ -12,6 +12,7 @@
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Block_lanczos_state.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Eigenvalue_count.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Spectra_lanczos.h>
+#include <CGAL/Spectral_deformation/internal/Eigensolvers/Single_vector_lanczos.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/dense_eigenpairs.h>
 #include <CGAL/Spectral_deformation/internal/Traits_requirements.h>
 
@@ -108,7 +109,7 @@ namespace CGAL {
 /// `set_reference_fallback(false)` was called), so that the result never
 /// depends on the block method converging.
 ///
-/// On small meshes (a few thousand vertices) the single-vector method is
+/// On small meshes (a few thousand vertices) a single-vector method is
 /// faster, but it can miss copies of a repeated eigenvalue, which
 /// the block method finds up to the block size: on two unit spheres (1284
 /// vertices, m = 10) Spectra's solver returned five of the six copies of
@@ -120,12 +121,18 @@ namespace CGAL {
 /// factorization of the shifted matrix (about 1 ms on 1,000 vertices), must
 /// be the number it found; copies of the largest eigenvalue may be any of
 /// them, as with a dense solver. When a copy is missing, `compute()` solves
-/// again with the block or the dense method. Measured on one thread (as the
-/// deformation prepares regions of fewer than 5,000 vertices), `m` = 100:
-/// 620 vertices in 28 ms instead of 46 ms (dense), 992 in 44 ms instead of
-/// 72 ms, 3,916 in 115-120 ms instead of 147-157 ms (block); `m` = 30 on
-/// 3,916 vertices in 19 ms instead of 55 ms. `set_reference_threshold()` hands
-/// larger meshes to the reference solver unchecked.
+/// again with the block or the dense method. The single-vector method is
+/// this class's iteration with blocks of one vector, written apart: the
+/// subspace grows without restarts, with the same partial
+/// reorthogonalization and deflation of the constants, and its
+/// Rayleigh-Ritz checks solve a tridiagonal eigenproblem (LAPACK's
+/// `dstemr`). Spectra's restarted solver, used there before, reorthogonalized
+/// every new vector against the whole subspace: on the reference harness's
+/// regions (one thread, as the deformation prepares regions of fewer than
+/// 5,000 vertices, `m` = 100), the basis of 999 vertices takes 45-54 ms
+/// instead of 58-70 ms, that of 3,433 vertices 112-137 ms instead of
+/// 193-228 ms. `set_reference_threshold()` hands larger meshes to the
+/// reference solver unchecked.
 ///
 /// Small problems (at most `dense_threshold()` vertices, 300 by default, or
 /// fewer than `5 m`), and problems whose subspace would not be much smaller
@@ -155,8 +162,8 @@ public:
     /// The stages of `compute()`, in this order.
     enum Stage {
       FACTORIZATION, ///< the shifted matrix `Q - sigma M` is being factored
-      ITERATION,     ///< the subspace grows; reported after every block solve
-      REFERENCE_SOLVE, ///< the reference solver runs: on a small problem, checked (see `uses_checked_single_vector()`), or when the mesh is below `reference_threshold()`, or when the subspace reached its maximum dimension unconverged; reported after every solve of the reference solver
+      ITERATION,     ///< the subspace grows; reported after every block solve (after every solve in the checked single-vector method of small problems, see `uses_checked_single_vector()`)
+      REFERENCE_SOLVE, ///< the reference solver runs: when the mesh is below `reference_threshold()`, or when the subspace reached its maximum dimension unconverged; reported after every solve of the reference solver
       DENSE_SOLVE,   ///< a small problem is solved with the dense solver (no intermediate report)
       APPROXIMATION, ///< `Partition_of_unity_eigensolver_traits` builds its space of sampled functions and solves the reduced problem (no intermediate report)
       FINISHED       ///< `compute()` is about to return, successfully or not
@@ -389,11 +396,26 @@ private:
   bool solve_checked(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass, Eigen::Index m,
                      Progress& progress, Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors) const
   {
+    namespace SD = Spectral_deformation::internal;
     std::string message;
     Eigen::VectorXd values;
     Eigen::MatrixXd vectors;
-    if(!run_reference(stiffness, mass, m, progress, values, vectors, message) ||
-       !Spectral_deformation::internal::Eigensolvers::smallest_eigenvalues_complete(stiffness, mass, values))
+    SD::Eigensolvers::Single_vector_lanczos_settings settings;
+    settings.max_dimension = maximum_subspace_dimension(m);
+    settings.tolerance = m_tolerance;
+    report(progress, Progress::FACTORIZATION);
+    const std::size_t solves_before = progress.solves;
+    auto after_solve = [this, &progress, solves_before](Eigen::Index k) {
+      progress.solves = solves_before + static_cast<std::size_t>(k);
+      progress.subspace_dimension = static_cast<std::size_t>(k);
+      report(progress, Progress::ITERATION);
+    };
+    auto after_check = [&progress](Eigen::Index converged) {
+      progress.converged_eigenpairs = static_cast<std::size_t>(converged);
+    };
+    if(!SD::Eigensolvers::single_vector_lanczos_eigenpairs<SparseSPDSolverTraits>(
+           stiffness, mass, m, settings, after_solve, after_check, values, vectors, message) ||
+       !SD::Eigensolvers::smallest_eigenvalues_complete(stiffness, mass, values))
       return false;
     eigenvalues.swap(values);
     eigenvectors.swap(vectors);

@@ -31,6 +31,10 @@ extern "C" void dsyevr_(const char* jobz, const char* range, const char* uplo, c
                         const int* il, const int* iu, const double* abstol, int* m, double* w,
                         double* z, const int* ldz, int* isuppz, double* work, const int* lwork,
                         int* iwork, const int* liwork, int* info);
+extern "C" void dstemr_(const char* jobz, const char* range, const int* n, double* d, double* e,
+                        const double* vl, const double* vu, const int* il, const int* iu, int* m, double* w,
+                        double* z, const int* ldz, const int* nzc, int* isuppz, int* tryrac, double* work,
+                        const int* lwork, int* iwork, const int* liwork, int* info);
 #endif
 
 namespace CGAL {
@@ -58,6 +62,17 @@ bool symmetric_eigenpairs_in_range(Eigen::MatrixXd A, Eigen::Index first, Eigen:
 /// `symmetric_eigenpairs_in_range()`.
 bool largest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index count,
                                   Eigen::VectorXd& values, Eigen::MatrixXd& vectors);
+
+/// The `count` largest eigenpairs of the symmetric tridiagonal matrix with
+/// `diagonal` (k values) and `subdiagonal` (its first k - 1 values are
+/// read): `values` ascending, `vectors` (k × count) orthonormal. With a
+/// LAPACK, by dstemr (relatively robust representations: O(k count) for
+/// the vectors; dstevr would hand a subset to bisection and inverse
+/// iteration, several times slower on these clustered spectra), else by
+/// Eigen's solver, which computes all of them.
+/// Returns false when the eigensolver fails.
+bool largest_tridiagonal_eigenpairs(const Eigen::VectorXd& diagonal, const Eigen::VectorXd& subdiagonal,
+                                    Eigen::Index count, Eigen::VectorXd& values, Eigen::MatrixXd& vectors);
 
 /// The `count` smallest eigenpairs of the symmetric matrix `A`, as
 /// `symmetric_eigenpairs_in_range()`.

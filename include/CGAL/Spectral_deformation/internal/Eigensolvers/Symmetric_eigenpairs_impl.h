@@ -93,6 +93,56 @@ CGAL_SSMD_CORE_FUNCTION bool largest_symmetric_eigenpairs(const Eigen::MatrixXd&
   return symmetric_eigenpairs_in_range(A, A.rows() - count, count, values, vectors);
 }
 
+CGAL_SSMD_CORE_FUNCTION bool largest_tridiagonal_eigenpairs(const Eigen::VectorXd& diagonal,
+                                                            const Eigen::VectorXd& subdiagonal, Eigen::Index count,
+                                                            Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
+{
+  const Eigen::Index k = diagonal.size();
+  if(count < 1 || count > k || subdiagonal.size() < k - 1)
+    return false;
+#ifdef CGAL_SSMD_USE_BLAS
+  // All of them: dstemr finds a subset by bisection, which cost more than
+  // the whole spectrum by dqds on the Lanczos matrices of 150 to 300 rows.
+  const int size = static_cast<int>(k);
+  const double unused = 0;
+  const int unused_index = 0;
+  int found = 0, info = 0, try_relative_accuracy = 1;
+  Eigen::VectorXd d = diagonal, e = Eigen::VectorXd::Zero(k);
+  e.head(k - 1) = subdiagonal.head(k - 1);
+  Eigen::VectorXd all_values(k);
+  Eigen::MatrixXd all_vectors(k, k);
+  std::vector<int> support(2 * static_cast<std::size_t>(k));
+  double work_size = 0;
+  int iwork_size = 0, query = -1;
+  dstemr_("V", "A", &size, d.data(), e.data(), &unused, &unused, &unused_index, &unused_index, &found,
+          all_values.data(), all_vectors.data(), &size, &size, support.data(), &try_relative_accuracy, &work_size,
+          &query, &iwork_size, &query, &info);
+  if(info != 0)
+    return false;
+  const int lwork = static_cast<int>(work_size), liwork = iwork_size;
+  std::vector<double> work(static_cast<std::size_t>(lwork));
+  std::vector<int> iwork(static_cast<std::size_t>(liwork));
+  try_relative_accuracy = 1;
+  dstemr_("V", "A", &size, d.data(), e.data(), &unused, &unused, &unused_index, &unused_index, &found,
+          all_values.data(), all_vectors.data(), &size, &size, support.data(), &try_relative_accuracy, work.data(),
+          &lwork, iwork.data(), &liwork, &info);
+  if(info != 0 || found != size)
+    return false;
+  values = all_values.tail(count);
+  vectors = all_vectors.rightCols(count);
+  return values.allFinite() && vectors.allFinite();
+#else
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver;
+  const Eigen::VectorXd off_diagonal = subdiagonal.head(k - 1);
+  solver.computeFromTridiagonal(diagonal, off_diagonal, Eigen::ComputeEigenvectors);
+  if(solver.info() != Eigen::Success)
+    return false;
+  values = solver.eigenvalues().tail(count);
+  vectors = solver.eigenvectors().rightCols(count);
+  return true;
+#endif
+}
+
 CGAL_SSMD_CORE_FUNCTION bool smallest_symmetric_eigenpairs(const Eigen::MatrixXd& A, Eigen::Index count,
                                                            Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
 {
