@@ -30,6 +30,7 @@ class Laplacian_null_space
 {
 public:
   Laplacian_null_space(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass)
+    : m_mass(mass) // also when Q is not a Laplacian: basis() then has n rows and no column
   {
     const Eigen::Index n = stiffness.rows();
     std::vector<Eigen::Index> parent(static_cast<std::size_t>(n));
@@ -68,7 +69,6 @@ public:
       m_component[i] = index;
       m_component_mass[index] += mass[i];
     }
-    m_mass = mass;
   }
 
   // The number of components, 0 when Q is not a Laplacian.
@@ -79,6 +79,8 @@ public:
   Eigen::MatrixXd basis() const
   {
     Eigen::MatrixXd result = Eigen::MatrixXd::Zero(m_mass.size(), dimension());
+    if(dimension() == 0)
+      return result;
     for(Eigen::Index i = 0; i < m_mass.size(); ++i)
       result(i, m_component[i]) = 1.0 / std::sqrt(m_component_mass[m_component[i]]);
     return result;
