@@ -376,6 +376,28 @@ TEST_CASE("largest tridiagonal eigenpairs: those of Eigen's dense solver", "[bas
                                                 vectors));
 }
 
+TEST_CASE("single-vector Lanczos: checks spaced by their cost in steps", "[basis][block_lanczos]")
+{
+  namespace E = CGAL::Spectral_deformation::internal::Eigensolvers;
+  // A check costs about k² / n steps: near convergence, where the forecast
+  // asks for one more step (one pair missing, converging slowly), the next
+  // check still comes that many steps later on small problems (at most
+  // k / 4), and as the forecast says on large ones.
+  auto next_after_slow_pair = [](Eigen::Index k, Eigen::Index n) {
+    E::Convergence_forecast forecast;
+    E::Ritz_pairs ritz;
+    ritz.converged = 98;
+    ritz.slowest = 10.0;
+    E::next_single_vector_check(forecast, k - 10, n, 99, ritz);
+    ritz.slowest = 1.001;
+    return E::next_single_vector_check(forecast, k, n, 99, ritz);
+  };
+  CHECK(next_after_slow_pair(200, 1000) == 240);
+  CHECK(next_after_slow_pair(200, 550) == 250);
+  CHECK(next_after_slow_pair(200, 100000) <= 200 + 200 / 16);
+  CHECK(next_after_slow_pair(200, 100000) > 200);
+}
+
 TEST_CASE("single-vector Lanczos: the dense solver's pairs, the constants deflated, a clear failure when the "
           "subspace is too small",
           "[basis][block_lanczos]")

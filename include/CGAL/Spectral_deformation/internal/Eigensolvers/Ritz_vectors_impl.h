@@ -18,7 +18,7 @@ namespace internal {
 namespace Eigensolvers {
 
 CGAL_SSMD_CORE_FUNCTION Eigen::Index ritz_panel_rows()
-{ return 512; }
+{ return 128; }
 
 CGAL_SSMD_CORE_FUNCTION int ritz_vector_threads()
 {

@@ -81,9 +81,13 @@ CGAL_SSMD_CORE_FUNCTION bool Lanczos_recurrence::rayleigh_ritz(Eigen::Index k, E
 }
 
 CGAL_SSMD_CORE_FUNCTION Eigen::Index next_single_vector_check(Convergence_forecast& forecast, Eigen::Index k,
-                                                              Eigen::Index wanted, const Ritz_pairs& ritz)
+                                                              Eigen::Index n, Eigen::Index wanted,
+                                                              const Ritz_pairs& ritz)
 {
-  return (std::min)(forecast.next_check(k, 1, wanted, ritz), k + (std::max)(Eigen::Index(4), k / 16));
+  const Eigen::Index forecast_check =
+      (std::min)(forecast.next_check(k, 1, wanted, ritz), k + (std::max)(Eigen::Index(4), k / 16));
+  const Eigen::Index balanced_steps = (std::min)((k * k + n - 1) / (std::max)(n, Eigen::Index(1)), k / 4);
+  return (std::max)(forecast_check, k + balanced_steps);
 }
 
 } // namespace Eigensolvers
