@@ -22,7 +22,7 @@ build="${SSMD_BUILD_DIR:-$root/build}"
 bench="${SSMD_HARNESS_DIR:-$root/../shared/bench}"
 rounds="${1:-3}"
 shift || true
-out="${OUT:-$build/harness}"
+out="$(realpath -m "${OUT:-$build/harness}")"
 if [ ! -x "$bench/compare.sh" ]; then
   echo "error: the reference harness is not at $bench (set SSMD_HARNESS_DIR)" >&2
   exit 1

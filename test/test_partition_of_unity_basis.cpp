@@ -222,6 +222,60 @@ TEST_CASE("Partition of unity basis: the reduced operator and its eigenvectors o
   }
 }
 
+TEST_CASE("Partition of unity basis: the reduced pair's eigenpairs by the single-vector method are the dense "
+          "solver's",
+          "[pou]")
+{
+  // A reduced pair small enough for a dense generalized solver (bumpy plane
+  // of 1,681 vertices, 200 samples, 600 functions): B is not diagonal, and
+  // A is singular (the constant function is in the space).
+  const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(40));
+  const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
+  const Eigen::SparseMatrix<double> stiffness = CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays);
+  const Eigen::VectorXd mass = CGAL::Spectral_deformation::internal::lumped_mass(arrays);
+  const E::Edge_length_graph graph = E::edge_length_graph(stiffness, arrays.positions);
+  double covering_radius = 0;
+  const std::vector<Eigen::Index> samples = E::farthest_point_samples(graph, 200, covering_radius);
+  const Eigen::SparseMatrix<double> functions =
+      E::partition_of_unity_functions(graph, arrays.positions, samples, 2 * covering_radius, true);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
+  Eigen::SparseMatrix<double> A, B;
+  E::galerkin_matrices(stiffness, mass, functions, rows, A, B);
+  REQUIRE(A.rows() == 600);
+
+  const Eigen::Index m = 30;
+  const Eigen::MatrixXd dense_A = A, dense_B = B;
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(dense_A, dense_B);
+  REQUIRE(dense.info() == Eigen::Success);
+  const Eigen::VectorXd dense_values = dense.eigenvalues().head(m);
+  const Eigen::MatrixXd dense_vectors = dense.eigenvectors().leftCols(m);
+
+  E::Single_vector_lanczos_settings settings;
+  settings.max_dimension = 8 * m;
+  settings.tolerance = 1e-10;
+  auto ignore = [](Eigen::Index) {};
+  Eigen::VectorXd values;
+  Eigen::MatrixXd vectors;
+  std::string message;
+  REQUIRE(E::single_vector_lanczos_iteration<CGAL::Default_eigensolver_sparse_spd_solver_traits>(
+      A, E::Sparse_mass(B), nullptr, E::shift_invert_shift(mass), m, settings, ignore, ignore, values, vectors,
+      message));
+  CHECK(message.empty());
+  REQUIRE(values.size() == m);
+  REQUIRE(vectors.rows() == 600);
+  REQUIRE(vectors.cols() == m);
+  CHECK(std::abs(values[0]) < 1e-8 * dense_values[1]);
+  CHECK((values - dense_values).tail(m - 1).cwiseQuotient(dense_values.tail(m - 1)).cwiseAbs().maxCoeff() < 1e-9);
+  const Eigen::MatrixXd gram = vectors.transpose() * B * vectors;
+  CHECK((gram - Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff() < 1e-12);
+  for(Eigen::Index i = 1; i < m; ++i)
+  {
+    INFO("eigenvector " << i);
+    const double cosine = dense_vectors.col(i).dot(B * vectors.col(i));
+    CHECK(std::abs(cosine) > 1.0 - 1e-8);
+  }
+}
+
 TEST_CASE("Partition of unity basis: M-orthonormal, eigenvalues above the exact ones and close to them", "[pou]")
 {
   const Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(5)); // 10242 vertices

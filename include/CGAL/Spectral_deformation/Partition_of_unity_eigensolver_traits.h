@@ -46,9 +46,11 @@ namespace CGAL {
 /// that fits its support (`set_linear_functions()`, on by default), three
 /// functions per sample. The eigenpairs of the cotangent Laplacian
 /// restricted to this space (a Rayleigh-Ritz projection: `Pᵀ Q P` against
-/// `Pᵀ M P`, `P` the `n × 3k` matrix of the functions) are computed with
-/// Spectra's shift-invert Lanczos, on the standard problem that a sparse
-/// Cholesky factorization of `Pᵀ M P` makes of them, and the basis is
+/// `Pᵀ M P`, `P` the `n × 3k` matrix of the functions) are computed by the
+/// shift-invert single-vector Lanczos method that
+/// `Block_lanczos_eigensolver_traits` uses on small meshes, with `Pᵀ M P`
+/// as its inner product (Spectra's shift-invert Lanczos on the standard form
+/// of the problem when its subspace fills up unconverged), and the basis is
 /// `H = P Y`. Only the sampling, the functions, `Pᵀ Q P`, `Pᵀ M P` and `H`
 /// cost time proportional to `n`; the eigenproblem has `3k` unknowns
 /// whatever the size of the mesh.

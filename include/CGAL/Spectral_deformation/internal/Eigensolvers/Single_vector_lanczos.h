@@ -7,6 +7,7 @@
 #ifndef CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SINGLE_VECTOR_LANCZOS_H
 #define CGAL_SPECTRAL_DEFORMATION_INTERNAL_EIGENSOLVERS_SINGLE_VECTOR_LANCZOS_H
 
+#include <CGAL/assertions.h>
 #include <CGAL/Spectral_deformation/internal/compiled_core.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Laplacian_null_space.h>
 #include <CGAL/Spectral_deformation/internal/Eigensolvers/Rayleigh_ritz.h>
@@ -88,30 +89,111 @@ struct Single_vector_lanczos_settings
 Eigen::Index next_single_vector_check(Convergence_forecast& forecast, Eigen::Index k, Eigen::Index n,
                                       Eigen::Index wanted, const Ritz_pairs& ritz);
 
-// The m smallest eigenpairs of Q h = lambda M h (M = diag(mass)), with
-// Q - sigma M factored by `SparseSPDSolverTraits`: `eigenvalues` ascending,
-// `eigenvectors` M-orthonormal, the constants of each component of a
-// Laplacian Q returned as eigenvectors of 0 and kept out of the Krylov
-// subspace. `after_solve(k)` is called after each solve with the subspace's
-// dimension, `after_check(converged)` after each Rayleigh–Ritz check.
-// Returns false with `message` set when the factorization or a solve
-// fails, when the subspace breaks down or when the pairs have not converged
-// within `settings.max_dimension` vectors.
-template <class SparseSPDSolverTraits, class AfterSolve, class AfterCheck>
-bool single_vector_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
-                                      Eigen::Index m, const Single_vector_lanczos_settings& settings,
-                                      const AfterSolve& after_solve, const AfterCheck& after_check,
-                                      Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
-                                      std::string& message)
+// The mass matrix M of the single-vector method as the iteration uses it:
+// y = M x, the shifted matrix Q - sigma M, and the Ritz vectors made
+// M-orthonormal. `Diagonal_mass` is the lumped mass of a mesh,
+// `Sparse_mass` the Gram matrix of a space of functions (the reduced
+// problem of the partition-of-unity basis).
+class Diagonal_mass
+{
+public:
+  explicit Diagonal_mass(const Eigen::VectorXd& diagonal) : m_diagonal(diagonal) {}
+
+  template <class In, class Out>
+  void apply(const In& x, Out& y) const
+  {
+    y.noalias() = m_diagonal.asDiagonal() * x;
+  }
+
+  Eigen::SparseMatrix<double> shifted(const Eigen::SparseMatrix<double>& stiffness, double sigma) const
+  {
+    return shifted_stiffness(stiffness, m_diagonal, sigma);
+  }
+
+  // Whether the iteration keeps M V beside V for `ritz_vectors()`.
+  static constexpr bool keeps_weighted_subspace = false;
+
+  // The known vectors, then V(:, 0 .. k) S, M-orthonormal, in the leading
+  // columns of V.
+  bool ritz_vectors(Eigen::MatrixXd& V, const Eigen::MatrixXd& /* weighted_subspace */, Eigen::Index k,
+                    const Eigen::MatrixXd& S, const Eigen::MatrixXd& known_vectors) const
+  {
+    return ritz_vectors_in_place(V, k, S, m_diagonal, known_vectors);
+  }
+
+private:
+  const Eigen::VectorXd& m_diagonal;
+};
+
+class Sparse_mass
+{
+public:
+  explicit Sparse_mass(const Eigen::SparseMatrix<double>& matrix) : m_matrix(matrix) {}
+
+  template <class In, class Out>
+  void apply(const In& x, Out& y) const
+  {
+    y.noalias() = m_matrix * x;
+  }
+
+  Eigen::SparseMatrix<double> shifted(const Eigen::SparseMatrix<double>& stiffness, double sigma) const
+  {
+    return stiffness - sigma * m_matrix;
+  }
+
+  // M V, kept by the iteration: M Y = (M V) S is a dense product, where a
+  // product with the sparse M took as long as the rest of `ritz_vectors()`.
+  static constexpr bool keeps_weighted_subspace = true;
+
+  // Y = V(:, 0 .. k) S, M-orthonormal, in the leading columns of V (no
+  // vector is known in closed form), with `weighted_subspace` = M V.
+  bool ritz_vectors(Eigen::MatrixXd& V, const Eigen::MatrixXd& weighted_subspace, Eigen::Index k,
+                    const Eigen::MatrixXd& S, const Eigen::MatrixXd& known_vectors) const
+  {
+    CGAL_precondition(known_vectors.cols() == 0);
+    (void)known_vectors;
+    const Eigen::MatrixXd ritz = V.leftCols(k) * S;
+    const Eigen::MatrixXd weighted = weighted_subspace.leftCols(k) * S;
+    const Eigen::MatrixXd gram = ritz.transpose() * weighted;
+    V.leftCols(S.cols()) = ritz;
+    return orthonormalize_in_place(V, 0, 0.5 * (gram + gram.transpose()));
+  }
+
+private:
+  const Eigen::SparseMatrix<double>& m_matrix;
+};
+
+// The m smallest eigenpairs of Q h = lambda M h, with Q - sigma M factored
+// by `SparseSPDSolverTraits`: `eigenvalues` ascending, `eigenvectors`
+// M-orthonormal. The vectors of `null_space` (when given: the constants of
+// each component of a Laplacian Q) are returned as eigenvectors of 0 and
+// kept out of the Krylov subspace. `after_solve(k)` is called after each
+// solve with the subspace's dimension, `after_check(converged)` after each
+// Rayleigh–Ritz check. Returns false with `message` set when the
+// factorization or a solve fails, when the subspace breaks down or when
+// the pairs have not converged within `settings.max_dimension` vectors.
+//
+// M v_j, the right-hand side of step j, is kept from the step before
+// (M v_j = M w / beta_j, with M w made for the norm of w), and the inner
+// products with v_j read it: one product with M per step, and one more per
+// orthogonalization pass, which matters when M is not diagonal.
+template <class SparseSPDSolverTraits, class Mass, class AfterSolve, class AfterCheck>
+bool single_vector_lanczos_iteration(const Eigen::SparseMatrix<double>& stiffness, const Mass& mass,
+                                     const Laplacian_null_space* null_space, double sigma, Eigen::Index m,
+                                     const Single_vector_lanczos_settings& settings,
+                                     const AfterSolve& after_solve, const AfterCheck& after_check,
+                                     Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
+                                     std::string& message)
 {
   typedef Eigen::MatrixXd Matrix;
   const Eigen::Index n = stiffness.rows();
-  const Laplacian_null_space null_space(stiffness, mass);
-  const Eigen::Index known = (std::min)(null_space.dimension(), m), wanted = m - known;
+  const Eigen::Index known = null_space != nullptr ? (std::min)(null_space->dimension(), m) : 0;
+  const Eigen::Index wanted = m - known;
+  const Matrix known_vectors = null_space != nullptr ? Matrix(null_space->basis().leftCols(known)) : Matrix(n, 0);
   if(wanted == 0)
   {
     eigenvalues = Eigen::VectorXd::Zero(m);
-    eigenvectors = null_space.basis().leftCols(m);
+    eigenvectors = known_vectors;
     return true;
   }
   const Eigen::Index capacity = (std::min)(settings.max_dimension, n - known - 1);
@@ -120,40 +202,51 @@ bool single_vector_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffne
     message = "the subspace cannot hold the wanted eigenpairs";
     return false;
   }
-  const double sigma = shift_invert_shift(mass);
   SparseSPDSolverTraits solver;
-  if(!solver.factor(shifted_stiffness(stiffness, mass, sigma)))
+  if(!solver.factor(mass.shifted(stiffness, sigma)))
   {
     message = "the factorization of the shifted stiffness matrix failed";
     return false;
   }
 
-  auto inner = [&mass](const auto& x, const auto& y) { return x.cwiseProduct(mass).dot(y); };
+  auto project_out = [null_space](Matrix& x) {
+    if(null_space != nullptr)
+      null_space->project_out(x);
+  };
   Matrix V(n, capacity + 1);
-  Matrix w(n, 1), rhs(n, 1), weighted(n, 1), coefficients(capacity + 1, 1);
+  Matrix weighted_subspace(Mass::keeps_weighted_subspace ? n : 0, capacity + 1);
+  // w, M w and M v_j.
+  Matrix w(n, 1), weighted(n, 1), weighted_current(n, 1), coefficients(capacity + 1, 1);
+  auto weigh = [&]() {
+    mass.apply(w, weighted);
+    return std::sqrt(w.col(0).dot(weighted.col(0)));
+  };
   // A fixed start: the result does not depend on the run.
   std::mt19937 generator(20080806u);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   for(Eigen::Index i = 0; i < n; ++i)
     w(i, 0) = uniform(generator);
-  null_space.project_out(w);
-  V.col(0) = w.col(0) / std::sqrt(inner(w.col(0), w.col(0)));
+  project_out(w);
+  const double start_norm = weigh();
+  V.col(0) = w.col(0) / start_norm;
+  weighted_current = weighted / start_norm;
+  if(Mass::keeps_weighted_subspace)
+    weighted_subspace.col(0) = weighted_current.col(0);
 
   // w -= V_k (V_kᵀ M w) by classical Gram–Schmidt, through Eigen's
   // matrix-vector products (a BLAS's dgemm packs its operands even for one
   // column), a second time only when the first removed more than half of
   // w's norm (Daniel, Gragg, Kaufman and Stewart's criterion): w has lost
   // orthogonality to sqrt(eps) only, from which one pass recovers it.
-  // Returns w's norm.
+  // Returns w's norm, with M w in `weighted`.
   auto orthogonalize = [&](Eigen::Index k, double norm) {
     for(int pass = 0; pass < 2; ++pass)
     {
-      weighted = mass.asDiagonal() * w;
       auto h = coefficients.topRows(k);
       h.noalias() = V.leftCols(k).transpose() * weighted;
       w.noalias() -= V.leftCols(k) * h;
-      null_space.project_out(w);
-      const double reduced = std::sqrt(inner(w.col(0), w.col(0)));
+      project_out(w);
+      const double reduced = weigh();
       if(reduced > 0.7071 * norm)
         return reduced;
       norm = reduced;
@@ -170,13 +263,12 @@ bool single_vector_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffne
   double beta = 0;
   for(Eigen::Index j = 0; j < capacity; ++j)
   {
-    rhs = mass.asDiagonal() * V.col(j);
-    if(!solver.solve(rhs, w))
+    if(!solver.solve(weighted_current, w))
     {
       message = "a solve with the factored shifted stiffness matrix failed";
       return false;
     }
-    null_space.project_out(w);
+    project_out(w);
     if(j > 0)
       w.col(0) -= beta * V.col(j - 1);
     double alpha = 0;
@@ -184,11 +276,11 @@ bool single_vector_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffne
     // recurrence assumes.
     for(int pass = 0; pass < 2; ++pass)
     {
-      const double c = inner(V.col(j), w.col(0));
+      const double c = weighted_current.col(0).dot(w.col(0));
       w.col(0) -= c * V.col(j);
       alpha += c;
     }
-    beta = std::sqrt(inner(w.col(0), w.col(0)));
+    beta = weigh();
     const Eigen::Index k = j + 1;
     after_solve(k);
     const double lost = recurrence.step(j, alpha, beta);
@@ -204,6 +296,9 @@ bool single_vector_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffne
       return false;
     }
     V.col(k) = w.col(0) / beta;
+    weighted_current = weighted / beta;
+    if(Mass::keeps_weighted_subspace)
+      weighted_subspace.col(k) = weighted_current.col(0);
     if(k < next_check && k < capacity)
       continue;
     Ritz_pairs ritz;
@@ -217,7 +312,7 @@ bool single_vector_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffne
     {
       Matrix selected;
       Eigen::VectorXd values = ritz_eigenvalues(ritz, known, sigma, k, selected);
-      if(!ritz_vectors_in_place(V, k, selected, mass, null_space.basis().leftCols(known)))
+      if(!mass.ritz_vectors(V, weighted_subspace, k, selected, known_vectors))
       {
         message = "the Ritz vectors are not independent";
         return false;
@@ -231,6 +326,22 @@ bool single_vector_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffne
   }
   message = "the eigenpairs did not converge within a subspace of " + std::to_string(capacity) + " vectors";
   return false;
+}
+
+// The m smallest eigenpairs of Q h = lambda M h (M = diag(mass)) by
+// `single_vector_lanczos_iteration()`, the constants of each component of a
+// Laplacian Q known, with the shift of `shift_invert_shift()`.
+template <class SparseSPDSolverTraits, class AfterSolve, class AfterCheck>
+bool single_vector_lanczos_eigenpairs(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& mass,
+                                      Eigen::Index m, const Single_vector_lanczos_settings& settings,
+                                      const AfterSolve& after_solve, const AfterCheck& after_check,
+                                      Eigen::VectorXd& eigenvalues, Eigen::MatrixXd& eigenvectors,
+                                      std::string& message)
+{
+  const Laplacian_null_space null_space(stiffness, mass);
+  return single_vector_lanczos_iteration<SparseSPDSolverTraits>(stiffness, Diagonal_mass(mass), &null_space,
+                                                                shift_invert_shift(mass), m, settings, after_solve,
+                                                                after_check, eigenvalues, eigenvectors, message);
 }
 
 } // namespace Eigensolvers
