@@ -126,11 +126,12 @@ namespace CGAL {
 /// subspace grows without restarts, with the same partial
 /// reorthogonalization and deflation of the constants, and its
 /// Rayleigh-Ritz checks solve a tridiagonal eigenproblem (LAPACK's
-/// `dstemr`). Spectra's restarted solver, used there before, reorthogonalized
+/// `dstemr`), at least k² / n steps apart (a check costs about that many
+/// steps). Spectra's restarted solver, used there before, reorthogonalized
 /// every new vector against the whole subspace: on the reference harness's
 /// regions (one thread, as the deformation prepares regions of fewer than
-/// 5,000 vertices, `m` = 100), the basis of 999 vertices takes 45-54 ms
-/// instead of 58-70 ms, that of 3,433 vertices 112-137 ms instead of
+/// 5,000 vertices, `m` = 100), the basis of 999 vertices takes 33-37 ms
+/// instead of 58-70 ms, that of 3,433 vertices 89-130 ms instead of
 /// 193-228 ms. `set_reference_threshold()` hands larger meshes to the
 /// reference solver unchecked.
 ///
