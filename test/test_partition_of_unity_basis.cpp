@@ -45,6 +45,31 @@ E::Edge_length_graph graph_of(const Mesh_arrays::Triangle_arrays& arrays)
   return E::edge_length_graph(CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays), arrays.positions);
 }
 
+// The reduced pair (A, B) = (Pᵀ Q P, Pᵀ M P) of a mesh's space of `samples`
+// sampled functions (three per sample), as the traits build it, and the
+// mesh's lumped mass.
+struct Reduced_pair
+{
+  Eigen::SparseMatrix<double> A, B;
+  Eigen::VectorXd mass;
+};
+
+Reduced_pair reduced_pair_of(const Surface_mesh& mesh, Eigen::Index samples)
+{
+  const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
+  const Eigen::SparseMatrix<double> stiffness = CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays);
+  Reduced_pair pair;
+  pair.mass = CGAL::Spectral_deformation::internal::lumped_mass(arrays);
+  const E::Edge_length_graph graph = E::edge_length_graph(stiffness, arrays.positions);
+  double covering_radius = 0;
+  const std::vector<Eigen::Index> sampled = E::farthest_point_samples(graph, samples, covering_radius);
+  const Eigen::SparseMatrix<double> functions =
+      E::partition_of_unity_functions(graph, arrays.positions, sampled, 2 * covering_radius, true);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
+  E::galerkin_matrices(stiffness, pair.mass, functions, rows, pair.A, pair.B);
+  return pair;
+}
+
 Eigen::MatrixXd positions_of(const Surface_mesh& mesh)
 {
   Eigen::MatrixXd x(mesh.number_of_vertices(), 3);
@@ -172,17 +197,10 @@ TEST_CASE("Partition of unity basis: the reduced operator and its eigenvectors o
   // A reduced pair whose Gram factor is large enough for the threaded
   // solves (bumpy plane of 17,161 vertices, 1000 samples, 3000 functions).
   const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(130));
-  const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
-  const Eigen::SparseMatrix<double> stiffness = CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays);
-  const Eigen::VectorXd mass = CGAL::Spectral_deformation::internal::lumped_mass(arrays);
-  const E::Edge_length_graph graph = E::edge_length_graph(stiffness, arrays.positions);
-  double covering_radius = 0;
-  const std::vector<Eigen::Index> samples = E::farthest_point_samples(graph, 1000, covering_radius);
-  const Eigen::SparseMatrix<double> functions =
-      E::partition_of_unity_functions(graph, arrays.positions, samples, 2 * covering_radius, true);
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
-  Eigen::SparseMatrix<double> A, B;
-  E::galerkin_matrices(stiffness, mass, functions, rows, A, B);
+  const Reduced_pair pair = reduced_pair_of(mesh, 1000);
+  const Eigen::SparseMatrix<double>& A = pair.A;
+  const Eigen::SparseMatrix<double>& B = pair.B;
+  const Eigen::VectorXd& mass = pair.mass;
   const double sigma = E::shift_invert_shift(mass);
   E::Standard_form_shift_invert_operator<CGAL::Default_sparse_spd_solver_traits> op(A, B);
   op.set_shift(sigma);
@@ -230,17 +248,10 @@ TEST_CASE("Partition of unity basis: the reduced pair's eigenpairs by the single
   // of 1,681 vertices, 200 samples, 600 functions): B is not diagonal, and
   // A is singular (the constant function is in the space).
   const Surface_mesh mesh = to_mesh<Surface_mesh>(bumpy_plane(40));
-  const Mesh_arrays::Triangle_arrays arrays = arrays_of(mesh);
-  const Eigen::SparseMatrix<double> stiffness = CGAL::Spectral_deformation::internal::cotangent_stiffness(arrays);
-  const Eigen::VectorXd mass = CGAL::Spectral_deformation::internal::lumped_mass(arrays);
-  const E::Edge_length_graph graph = E::edge_length_graph(stiffness, arrays.positions);
-  double covering_radius = 0;
-  const std::vector<Eigen::Index> samples = E::farthest_point_samples(graph, 200, covering_radius);
-  const Eigen::SparseMatrix<double> functions =
-      E::partition_of_unity_functions(graph, arrays.positions, samples, 2 * covering_radius, true);
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = functions;
-  Eigen::SparseMatrix<double> A, B;
-  E::galerkin_matrices(stiffness, mass, functions, rows, A, B);
+  const Reduced_pair pair = reduced_pair_of(mesh, 200);
+  const Eigen::SparseMatrix<double>& A = pair.A;
+  const Eigen::SparseMatrix<double>& B = pair.B;
+  const Eigen::VectorXd& mass = pair.mass;
   REQUIRE(A.rows() == 600);
 
   const Eigen::Index m = 30;

@@ -221,17 +221,20 @@ bool single_vector_lanczos_iteration(const Eigen::SparseMatrix<double>& stiffnes
     mass.apply(w, weighted);
     return std::sqrt(w.col(0).dot(weighted.col(0)));
   };
+  // v_k = w / norm, and M v_k from M w.
+  auto append = [&](Eigen::Index k, double norm) {
+    V.col(k) = w.col(0) / norm;
+    weighted_current = weighted / norm;
+    if(Mass::keeps_weighted_subspace)
+      weighted_subspace.col(k) = weighted_current.col(0);
+  };
   // A fixed start: the result does not depend on the run.
   std::mt19937 generator(20080806u);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   for(Eigen::Index i = 0; i < n; ++i)
     w(i, 0) = uniform(generator);
   project_out(w);
-  const double start_norm = weigh();
-  V.col(0) = w.col(0) / start_norm;
-  weighted_current = weighted / start_norm;
-  if(Mass::keeps_weighted_subspace)
-    weighted_subspace.col(0) = weighted_current.col(0);
+  append(0, weigh());
 
   // w -= V_k (V_kᵀ M w) by classical Gram–Schmidt, through Eigen's
   // matrix-vector products (a BLAS's dgemm packs its operands even for one
@@ -295,10 +298,7 @@ bool single_vector_lanczos_iteration(const Eigen::SparseMatrix<double>& stiffnes
       message = "the Krylov subspace broke down";
       return false;
     }
-    V.col(k) = w.col(0) / beta;
-    weighted_current = weighted / beta;
-    if(Mass::keeps_weighted_subspace)
-      weighted_subspace.col(k) = weighted_current.col(0);
+    append(k, beta);
     if(k < next_check && k < capacity)
       continue;
     Ritz_pairs ritz;
